@@ -1,0 +1,62 @@
+#include "kernel/number_types.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace exactvis {
+
+std::string to_rational_string(const Exact& x) {
+  const ExactInt num = x.numerator();
+  const ExactInt den = x.denominator();
+  char* n = mpz_get_str(nullptr, 10, num.mpz());
+  std::string s = n;
+  free(n);
+  if (den != 1) {
+    char* d = mpz_get_str(nullptr, 10, den.mpz());
+    s += "/";
+    s += d;
+    free(d);
+  }
+  return s;
+}
+
+Exact parse_rational(const std::string& text) {
+  if (text.empty()) throw std::invalid_argument("empty number");
+  const auto slash = text.find('/');
+  if (slash != std::string::npos) {
+    mpq_t q;
+    mpq_init(q);
+    if (mpq_set_str(q, text.c_str(), 10) != 0) {
+      mpq_clear(q);
+      throw std::invalid_argument("not a rational number: '" + text + "'");
+    }
+    if (mpz_sgn(mpq_denref(q)) == 0) {
+      mpq_clear(q);
+      throw std::invalid_argument("zero denominator: '" + text + "'");
+    }
+    mpq_canonicalize(q);
+    Exact r(q);
+    mpq_clear(q);
+    return r;
+  }
+  size_t used = 0;
+  double v = 0;
+  try {
+    v = std::stod(text, &used);
+  } catch (const std::exception&) {
+    throw std::invalid_argument("not a number: '" + text + "'");
+  }
+  if (used != text.size()) throw std::invalid_argument("not a number: '" + text + "'");
+  if (!std::isfinite(v)) throw std::invalid_argument("non-finite number: '" + text + "'");
+  return Exact(v);
+}
+
+bool exact_double(const Exact& x, double* out) {
+  const double d = CGAL::to_double(x);
+  if (!std::isfinite(d)) return false;
+  if (Exact(d) != x) return false;
+  if (out) *out = d;
+  return true;
+}
+
+}  // namespace exactvis

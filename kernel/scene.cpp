@@ -1,0 +1,27 @@
+#include "kernel/scene.hpp"
+
+#include <algorithm>
+#include <limits>
+
+namespace exactvis {
+
+std::int64_t Scene::index_of_id(std::int64_t id) const {
+  auto it = std::lower_bound(triangles.begin(), triangles.end(), id,
+                             [](const SceneTriangle& t, std::int64_t v) { return t.id < v; });
+  if (it == triangles.end() || it->id != id) return -1;
+  return it - triangles.begin();
+}
+
+Box3 bounding_box(const Scene& scene) {
+  const double inf = std::numeric_limits<double>::infinity();
+  Box3 b{{inf, inf, inf}, {-inf, -inf, -inf}};
+  for (const auto& t : scene.triangles)
+    for (int k = 0; k < 3; ++k) {
+      const Point3& p = scene.corner(t, k);
+      b.lo = {std::min(b.lo.x, p.x), std::min(b.lo.y, p.y), std::min(b.lo.z, p.z)};
+      b.hi = {std::max(b.hi.x, p.x), std::max(b.hi.y, p.y), std::max(b.hi.z, p.z)};
+    }
+  return b;
+}
+
+}  // namespace exactvis
