@@ -1,0 +1,34 @@
+#pragma once
+// Loading scenes from mesh files (OBJ, PLY, OFF, STL) through OpenMesh's readers.
+//
+// The rules (docs/theory.md, "4. Scene model and ids"):
+// - Polygons are fan-triangulated from the face's first vertex: (v0,v1,v2), (v0,v2,v3), ...
+// - Triangle id = index in load order over all files, fixed BEFORE zero-area triangles (exact `collinear`)
+//   are dropped; dropped ids are absent. Each file with drops prints "FILE: dropped N degenerate triangles"
+//   to stderr.
+// - Vertex ids: each file's vertices in the file's order, files appended in the order given. (STL has no
+//   shared vertices in the file; OpenMesh merges equal positions, in order of first appearance.)
+// - Objects: OBJ `g`/`o` groups when the file has any, else connected components over shared vertex ids.
+// - Coordinates: OBJ and ASCII OFF coordinates are parsed as exact doubles by us (OpenMesh parses float32);
+//   PLY and STL coordinates are what OpenMesh reads (float32; STL is float32 by definition).
+#include "kernel/scene.hpp"
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace exactvis {
+
+// Bad input file; what() is one line "FILE: problem".
+struct InputError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// Loads several files into one scene (ids continue across files, in the order given).
+// Input: paths (non-empty). Output: the scene. Throws InputError on any bad input.
+Scene load_scenes(const std::vector<std::string>& paths);
+
+// Loads one file; same as load_scenes({path}).
+Scene load_scene(const std::string& path);
+
+}  // namespace exactvis
