@@ -25,6 +25,17 @@ Sign orient3d_impl(const Vec3<C>& a, const Vec3<C>& b, const Vec3<C>& c, const V
 }
 
 template <class C>
+Sign orient2d_projected_impl(const Vec3<C>& a, const Vec3<C>& b, const Vec3<C>& c, int axis) {
+  static PredicateCounter counter("orient2d_projected");
+  return filtered_sign(counter, [&](auto nt) {
+    using NT = typename decltype(nt)::type;
+    const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+    const NT au = as<NT>(a[u]), av = as<NT>(a[v]);
+    return (as<NT>(b[u]) - au) * (as<NT>(c[v]) - av) - (as<NT>(b[v]) - av) * (as<NT>(c[u]) - au);
+  });
+}
+
+template <class C>
 bool collinear_impl(const Vec3<C>& a, const Vec3<C>& b, const Vec3<C>& c) {
   static PredicateCounter counter("collinear");
   // The cross product (b-a) x (c-a) vanishes iff collinear; test its three components.
@@ -67,6 +78,12 @@ Sign side_of_lines(const PluckerLine<Exact>& a, const PluckerLine<Exact>& b) {
 Sign orient3d(const Point3& a, const Point3& b, const Point3& c, const Point3& d) { return orient3d_impl(a, b, c, d); }
 Sign orient3d(const RationalPoint3& a, const RationalPoint3& b, const RationalPoint3& c, const RationalPoint3& d) {
   return orient3d_impl(a, b, c, d);
+}
+Sign orient2d_projected(const Point3& a, const Point3& b, const Point3& c, int axis) {
+  return orient2d_projected_impl(a, b, c, axis);
+}
+Sign orient2d_projected(const RationalPoint3& a, const RationalPoint3& b, const RationalPoint3& c, int axis) {
+  return orient2d_projected_impl(a, b, c, axis);
 }
 bool collinear(const Point3& a, const Point3& b, const Point3& c) { return collinear_impl(a, b, c); }
 bool collinear(const RationalPoint3& a, const RationalPoint3& b, const RationalPoint3& c) {

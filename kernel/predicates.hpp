@@ -24,6 +24,13 @@ Sign side_of_lines(const PluckerLine<Exact>& a, const PluckerLine<Exact>& b);
 Sign orient3d(const Point3& a, const Point3& b, const Point3& c, const Point3& d);
 Sign orient3d(const RationalPoint3& a, const RationalPoint3& b, const RationalPoint3& c, const RationalPoint3& d);
 
+// orient2d of the projections of a, b, c onto the coordinate plane orthogonal to `axis` (0, 1 or 2), with
+// coordinates taken in cyclic order (axis+1, axis+2): the sign of component `axis` of (b-a) x (c-a).
+// For a triangle abc it is the sign of its normal's `axis` component, so it is Zero for all three axes iff
+// a, b, c are collinear; and it is the orientation test of the coplanar (projected) configuration.
+Sign orient2d_projected(const Point3& a, const Point3& b, const Point3& c, int axis);
+Sign orient2d_projected(const RationalPoint3& a, const RationalPoint3& b, const RationalPoint3& c, int axis);
+
 // True iff a, b, c are collinear (the triangle abc has zero area).
 bool collinear(const Point3& a, const Point3& b, const Point3& c);
 bool collinear(const RationalPoint3& a, const RationalPoint3& b, const RationalPoint3& c);

@@ -1,0 +1,14 @@
+#pragma once
+// Numbers a0 + a1 * sqrt(root) with exact rational a0, a1, root: the field Q(sqrt(D)) in which the lines
+// through four lines live. Kept out of widely included headers (CGAL/Sqrt_extension.h is heavy).
+// Values from one construction share one root D; CGAL decides signs and comparisons exactly (also across
+// different roots, ACDE_TAG = Tag_true), with an interval filter first (FP_TAG = Tag_true).
+#include "kernel/number_types.hpp"
+
+#include <CGAL/Sqrt_extension.h>
+
+namespace exactvis {
+
+using RootNumber = CGAL::Sqrt_extension<Exact, Exact, CGAL::Tag_true, CGAL::Tag_true>;
+
+}  // namespace exactvis
