@@ -1,0 +1,202 @@
+#include "events/ev_events.hpp"
+
+#include "events/occluder_index.hpp"
+#include "events/progress_bar.hpp"
+#include "events/tangency.hpp"
+#include "kernel/predicates.hpp"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <map>
+
+namespace exactvis {
+namespace {
+
+// A closed parameter interval where lines are invalid, with the causes at its ends.
+struct Invalid {
+  Exact lo, hi;
+  EventEnd lo_end, hi_end;
+};
+
+bool has_vertex(const SceneTriangle& t, int v) { return t.v[0] == v || t.v[1] == v || t.v[2] == v; }
+
+// Parameters t in (0, 1) where the vertex rule may change, each with the fan triangle causing it.
+// The rule's inputs are signs of functions linear in t: det(d(t), w1, w2) per fan triangle (the line enters
+// a face plane) and, for link vertices W in the wedge plane, the t where the line passes through W.
+std::map<Exact, int> vertex_rule_breakpoints(const Scene& scene, const VertexFan& fan, const Vec3<Exact>& av,
+                                             const Vec3<Exact>& bv) {
+  std::map<Exact, int> out;
+  const Vec3<Exact> V = to_rational(scene.vertices[fan.vertex]);
+  const Vec3<Exact> ba = bv - av;
+  auto add = [&](const Exact& t, int ti) {
+    if (CGAL::sign(t) > 0 && t < 1) out.emplace(t, ti);
+  };
+  for (int ti : fan.triangles) {
+    const auto& t = scene.triangles[ti];
+    int k = 0;
+    while (t.v[k] != fan.vertex) ++k;
+    const Vec3<Exact> w1 = to_rational(scene.vertices[t.v[(k + 1) % 3]]) - V;
+    const Vec3<Exact> w2 = to_rational(scene.vertices[t.v[(k + 2) % 3]]) - V;
+    const Vec3<Exact> n = cross(w1, w2);
+    const Exact c0 = dot(av, n), c1 = dot(ba, n);
+    if (CGAL::sign(c1) != 0) {
+      add(-c0 / c1, ti);
+    } else if (CGAL::sign(c0) == 0) {
+      // The wedge lies in this face's plane: the rule changes where the line passes through W1 or W2.
+      for (const auto& w : {w1, w2}) {
+        const Vec3<Exact> c = cross(av, w), e = cross(ba, w);
+        for (int j = 0; j < 3; ++j) {
+          if (CGAL::sign(e[j]) == 0) continue;
+          const Exact s = -c[j] / e[j];
+          const Vec3<Exact> dd = av + s * ba;
+          if (cross(dd, w) == Vec3<Exact>()) add(s, ti);
+          break;
+        }
+      }
+    }
+  }
+  return out;
+}
+
+// Sweeps [0, 1] minus the union of closed invalid intervals; keeps components of positive length.
+std::vector<EvInterval> free_components(std::vector<Invalid> invalid) {
+  std::sort(invalid.begin(), invalid.end(), [](const Invalid& x, const Invalid& y) { return x.lo < y.lo; });
+  std::vector<EvInterval> out;
+  Exact pos(0);
+  EventEnd pos_end;  // EdgeEndpoint
+  for (const auto& iv : invalid) {
+    if (iv.lo > pos) out.push_back({pos, iv.lo, pos_end, iv.lo_end});
+    if (iv.hi >= pos) {
+      pos = iv.hi;
+      pos_end = iv.hi_end;
+    }
+  }
+  if (pos < 1) out.push_back({pos, Exact(1), pos_end, EventEnd{}});
+  return out;
+}
+
+}  // namespace
+
+Vec3<Exact> ev_edge_point(const Scene& scene, const std::array<int, 2>& edge, const Exact& t) {
+  const Vec3<Exact> a = to_rational(scene.vertices[edge[0]]);
+  const Vec3<Exact> b = to_rational(scene.vertices[edge[1]]);
+  return a + t * (b - a);
+}
+
+std::optional<EvEvent> ev_event(const Scene& scene, const SceneAdjacency& adj, const OccluderIndex& index,
+                                const VertexFan& fan, int edge, EvStats* stats) {
+  const int v = fan.vertex;
+  const SceneEdge& e = adj.edges[edge];
+  if (e.v[0] == v || e.v[1] == v) return std::nullopt;
+  if (stats) ++stats->pairs;
+  const Point3& pv = scene.vertices[v];
+  const Point3& pa = scene.vertices[e.v[0]];
+  const Point3& pb = scene.vertices[e.v[1]];
+  if (collinear(pv, pa, pb)) return std::nullopt;  // no 1-parameter family (docs: degenerate cases)
+  if (!edge_tangent_in_plane(scene, e, pv)) return std::nullopt;
+  if (stats) ++stats->tangent_pairs;
+
+  const Vec3<Exact> V = to_rational(pv);
+  const Vec3<Exact> av = to_rational(pa) - V, bv = to_rational(pb) - V;
+  const Vec3<Exact> normal = cross(av, bv);
+  auto dir = [&](const Exact& t) { return av + t * (bv - av); };
+
+  std::vector<Invalid> invalid;
+  // Vertex rule: constant between breakpoints; test each open piece at its midpoint and each breakpoint.
+  {
+    const auto breaks = vertex_rule_breakpoints(scene, fan, av, bv);
+    std::vector<std::pair<Exact, int>> pts{{Exact(0), -1}};
+    for (const auto& [t, ti] : breaks) pts.emplace_back(t, ti);
+    pts.emplace_back(Exact(1), -1);
+    auto end_at = [&](int ti) {
+      EventEnd x;
+      x.cause = ti >= 0 ? EventEnd::Cause::Tangency : EventEnd::Cause::EdgeEndpoint;
+      x.triangle = ti >= 0 ? scene.triangles[ti].id : -1;
+      return x;
+    };
+    for (std::size_t i = 0; i + 1 < pts.size(); ++i) {
+      const Exact mid = (pts[i].first + pts[i + 1].first) / 2;
+      if (!line_tangent_at_vertex(scene, fan, dir(mid), normal).tangent)
+        invalid.push_back({pts[i].first, pts[i + 1].first, end_at(pts[i].second), end_at(pts[i + 1].second)});
+      if (i + 1 < pts.size() - 1) {
+        const auto& [t, ti] = pts[i + 1];
+        if (!line_tangent_at_vertex(scene, fan, dir(t), normal).tangent)
+          invalid.push_back({t, t, end_at(ti), end_at(ti)});
+      }
+    }
+  }
+  // Occluders: closed triangles not incident to V and not having E as an edge.
+  for (int ti : index.triangles_meeting(pv, pa, pb)) {
+    const auto& t = scene.triangles[ti];
+    if (has_vertex(t, v) || (has_vertex(t, e.v[0]) && has_vertex(t, e.v[1]))) continue;
+    if (stats) ++stats->occluder_tests;
+    const auto b = wedge_blocked_interval(pv, pa, pb, {scene.corner(t, 0), scene.corner(t, 1), scene.corner(t, 2)},
+                                          {t.v[0], t.v[1], t.v[2]});
+    if (!b) continue;
+    EventEnd lo{EventEnd::Cause::Occluder, t.id, b->lo_feature};
+    EventEnd hi{EventEnd::Cause::Occluder, t.id, b->hi_feature};
+    invalid.push_back({b->lo, b->hi, lo, hi});
+  }
+  EvEvent ev;
+  ev.vertex = v;
+  ev.edge = e.v;
+  ev.intervals = free_components(std::move(invalid));
+  if (ev.intervals.empty()) return std::nullopt;
+  return ev;
+}
+
+EvResult enumerate_ev_events(const Scene& scene, const EvOptions& options) {
+  const SceneAdjacency adj = build_scene_adjacency(scene);
+  const OccluderIndex index(scene);
+  const int nv = static_cast<int>(scene.vertices.size());
+
+  std::vector<char> light_vertex(nv, 0);
+  std::vector<int> light_edges;
+  const bool restricted = !options.light_triangles.empty();
+  for (int ti : options.light_triangles) {
+    const auto& t = scene.triangles.at(ti);
+    for (int k = 0; k < 3; ++k) {
+      light_vertex[t.v[k]] = 1;
+      light_edges.push_back(adj.edge_index(t.v[k], t.v[(k + 1) % 3]));
+    }
+  }
+  std::sort(light_edges.begin(), light_edges.end());
+  light_edges.erase(std::unique(light_edges.begin(), light_edges.end()), light_edges.end());
+
+  std::vector<std::vector<EvEvent>> per_vertex(nv);
+  std::vector<EvStats> per_vertex_stats(nv);
+  ProgressBar bar("EV events", static_cast<std::uint64_t>(nv), options.progress);
+  auto work = [&](int v) {
+    if (!adj.vertex_triangles[v].empty()) {
+      const VertexFan fan = build_vertex_fan(scene, adj, v);
+      EvStats& st = per_vertex_stats[v];
+      auto one = [&](int ei) {
+        if (auto ev = ev_event(scene, adj, index, fan, ei, &st)) per_vertex[v].push_back(std::move(*ev));
+      };
+      if (!restricted || light_vertex[v]) {
+        for (int ei = 0; ei < static_cast<int>(adj.edges.size()); ++ei) one(ei);
+      } else {
+        for (int ei : light_edges) one(ei);
+      }
+    }
+    bar.advance();
+  };
+  if (options.parallel) {
+    tbb::parallel_for(tbb::blocked_range<int>(0, nv, 1), [&](const tbb::blocked_range<int>& r) {
+      for (int v = r.begin(); v != r.end(); ++v) work(v);
+    });
+  } else {
+    for (int v = 0; v < nv; ++v) work(v);
+  }
+  EvResult result;
+  for (int v = 0; v < nv; ++v) {
+    for (auto& ev : per_vertex[v]) result.events.push_back(std::move(ev));
+    result.stats.pairs += per_vertex_stats[v].pairs;
+    result.stats.tangent_pairs += per_vertex_stats[v].tangent_pairs;
+    result.stats.occluder_tests += per_vertex_stats[v].occluder_tests;
+  }
+  return result;
+}
+
+}  // namespace exactvis

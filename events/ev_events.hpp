@@ -1,0 +1,78 @@
+#pragma once
+// EV critical line sets with occlusion (docs/theory.md section 6).
+//
+// For vertex V and edge E = (A, B) of the scene (A, B vertex ids with A < B), the EV set is the lines through
+// V and P(t) = A + t (B - A), t in [0, 1]. Line t is *valid* iff it is tangent at E (edge rule) and at V
+// (vertex rule), and the open segment (V, P(t)) meets no occluder: a closed triangle not incident to V and
+// not having E as an edge. The valid set is a finite union of intervals; reported are the closures of its
+// components of positive length ("free intervals"), with exact rational ends.
+#include "events/scene_adjacency.hpp"
+#include "events/wedge_blocking.hpp"
+#include "kernel/number_types.hpp"
+#include "kernel/scene.hpp"
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+namespace exactvis {
+
+class OccluderIndex;
+struct VertexFan;
+
+// Why a free interval ends at a parameter.
+struct EventEnd {
+  enum class Cause {
+    EdgeEndpoint,  // t = 0 or 1: the line through V and an endpoint of E (a VV line)
+    Occluder,      // an occluder starts/stops blocking: `triangle` (stable id) and its `feature`
+    Tangency,      // the line stops being tangent at V: `triangle` (stable id) is the fan triangle whose
+                   // plane it lies in there, or -1 when the change is a winding change of V's closed fan
+  };
+  Cause cause = Cause::EdgeEndpoint;
+  std::int64_t triangle = -1;
+  OccluderFeature feature;  // meaningful for Occluder
+};
+
+struct EvInterval {
+  Exact t0, t1;     // 0 <= t0 < t1 <= 1
+  EventEnd end0, end1;
+};
+
+struct EvEvent {
+  int vertex = -1;                 // scene vertex id of V
+  std::array<int, 2> edge{};       // scene vertex ids of E, edge[0] < edge[1]; t runs from edge[0] to edge[1]
+  std::vector<EvInterval> intervals;  // sorted, disjoint except possibly sharing an end
+};
+
+struct EvStats {
+  std::uint64_t pairs = 0;            // (V, E) pairs examined
+  std::uint64_t tangent_pairs = 0;    // pairs passing the edge rule
+  std::uint64_t occluder_tests = 0;   // exact wedge/occluder tests after culling
+};
+
+struct EvOptions {
+  // Light restriction: when non-empty (indices into Scene::triangles), only events with V a vertex of a
+  // light triangle or E an edge of a light triangle.
+  std::vector<int> light_triangles;
+  bool progress = false;   // progress bar on stderr
+  bool parallel = true;    // oneTBB over vertices
+};
+
+struct EvResult {
+  std::vector<EvEvent> events;  // sorted by (vertex, edge); only events with at least one free interval
+  EvStats stats;
+};
+
+// All EV events of `scene` (see the header comment), exact.
+EvResult enumerate_ev_events(const Scene& scene, const EvOptions& options = {});
+
+// The one EV event of vertex `v` and edge `adj.edges[edge]` (std::nullopt if no free interval).
+// `fan` must be build_vertex_fan(scene, adj, v). Exposed for tests and the skeleton.
+std::optional<EvEvent> ev_event(const Scene& scene, const SceneAdjacency& adj, const OccluderIndex& index,
+                                const VertexFan& fan, int edge, EvStats* stats = nullptr);
+
+// The point P(t) on the edge (exact).
+Vec3<Exact> ev_edge_point(const Scene& scene, const std::array<int, 2>& edge, const Exact& t);
+
+}  // namespace exactvis

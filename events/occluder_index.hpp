@@ -1,0 +1,27 @@
+#pragma once
+// Candidate occluders for a wedge: a CGAL AABB tree over the scene's triangles (CGAL stays in the .cpp).
+// The query is conservative and exact: every triangle meeting the closed query triangle is returned
+// (Epick's do_intersect predicates are exact), so culling never changes a result.
+#include "kernel/scene.hpp"
+
+#include <memory>
+#include <vector>
+
+namespace exactvis {
+
+class OccluderIndex {
+ public:
+  explicit OccluderIndex(const Scene& scene);
+  ~OccluderIndex();
+  OccluderIndex(const OccluderIndex&) = delete;
+  OccluderIndex& operator=(const OccluderIndex&) = delete;
+  // Indices into Scene::triangles of all triangles meeting the closed triangle (a, b, c) (not collinear),
+  // in increasing order. Thread-safe.
+  std::vector<int> triangles_meeting(const Point3& a, const Point3& b, const Point3& c) const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace exactvis
