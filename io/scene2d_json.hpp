@@ -1,0 +1,27 @@
+#pragma once
+// Reading 2D scenes: JSON files, or the section of a 3D scene by an axis-parallel plane.
+//
+// JSON: {"polygons": [P, ...]} where P is either a ring [[x,y], ...] (a polygon without holes) or a list of
+// rings [[[x,y],...], [[x,y],...], ...] (outer boundary first, then holes). Coordinates are JSON numbers
+// (taken as the exact doubles they are) or strings "num/den". Rings are not closed (no repeated vertex).
+#include "skeleton/scene2d.hpp"
+
+#include <string>
+#include <vector>
+
+namespace exactvis {
+
+// Parses the polygons of a 2D scene JSON document. Throws InputError("FILE: problem").
+std::vector<PolygonInput2D> read_polygons2d_json(const std::string& path);
+
+// Section of a 3D scene file (any format load_scenes reads) by the plane `spec`, "x=V", "y=V" or "z=V"
+// (V exact, e.g. 1.5 or 3/2). Plane coordinates: z -> (x, y), x -> (y, z), y -> (z, x). The section must
+// consist of closed loops (watertight meshes) that avoid mesh vertices; nested loops become holes.
+// Throws InputError with a one-line reason otherwise.
+std::vector<PolygonInput2D> slice_scene_file(const std::string& path, const std::string& spec);
+
+// Either of the above (slice when `slice_spec` is non-empty), validated into a Scene2D.
+// Throws InputError("FILE: problem") for unreadable files and invalid scenes.
+Scene2D load_scene2d(const std::string& path, const std::string& slice_spec = "");
+
+}  // namespace exactvis

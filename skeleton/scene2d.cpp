@@ -1,0 +1,228 @@
+#include "skeleton/scene2d.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <sstream>
+
+namespace exactvis {
+namespace {
+
+std::string where(const Point2& p) {
+  std::ostringstream s;
+  s << "(" << p.ax << ", " << p.ay << ")";
+  return s.str();
+}
+
+Exact twice_area(const std::vector<Point2>& r) {
+  Exact a = 0;
+  for (std::size_t i = 0; i < r.size(); ++i) {
+    const Point2& p = r[i];
+    const Point2& q = r[(i + 1) % r.size()];
+    a += p.x * q.y - p.y * q.x;
+  }
+  return a;
+}
+
+// Crossing-number test; p must not lie on the ring. Exact.
+bool inside_ring(const std::vector<Point2>& pts, int first, int size, const Point2& p) {
+  bool in = false;
+  for (int i = 0; i < size; ++i) {
+    const Point2& a = pts[first + i];
+    const Point2& b = pts[first + (i + 1) % size];
+    const bool a_above = a.y > p.y, b_above = b.y > p.y;
+    if (a_above == b_above) continue;
+    // edge crosses the horizontal line through p; is the crossing right of p?
+    const Sign o = orientation2(a, b, p);
+    if ((o == Sign::Positive) == b_above) in = !in;
+  }
+  return in;
+}
+
+bool on_ring(const std::vector<Point2>& pts, int first, int size, const Point2& p) {
+  for (int i = 0; i < size; ++i) {
+    const Point2& a = pts[first + i];
+    const Point2& b = pts[first + (i + 1) % size];
+    if (orientation2(a, b, p) == Sign::Zero && dot_sign(p, a, p, b) != Sign::Positive) return true;
+  }
+  return false;
+}
+
+struct EdgeRef {
+  int a, b;        // vertex ids
+  double lo, hi;   // x-extent (enclosing), for the sweep filter
+};
+
+void check_edges(const Scene2D& s) {
+  const int n = s.num_vertices();
+  std::vector<EdgeRef> edges;
+  edges.reserve(n);
+  for (int v = 0; v < n; ++v) {
+    const Point2& a = s.points[v];
+    const Point2& b = s.points[s.next[v]];
+    edges.push_back({v, s.next[v], std::min(a.ix.inf(), b.ix.inf()), std::max(a.ix.sup(), b.ix.sup())});
+  }
+  std::sort(edges.begin(), edges.end(), [](const EdgeRef& x, const EdgeRef& y) { return x.lo < y.lo; });
+  for (std::size_t i = 0; i < edges.size(); ++i) {
+    const EdgeRef& e = edges[i];
+    const Point2 &a = s.points[e.a], &b = s.points[e.b];
+    for (std::size_t j = i + 1; j < edges.size() && edges[j].lo <= e.hi; ++j) {
+      const EdgeRef& f = edges[j];
+      const Point2 &c = s.points[f.a], &d = s.points[f.b];
+      if (e.b == f.a || f.b == e.a) {  // consecutive: must not fold back onto each other
+        const int shared = e.b == f.a ? e.b : e.a;
+        const int other_e = shared == e.b ? e.a : e.b;
+        const int other_f = shared == f.a ? f.b : f.a;
+        if (e.b == f.a && f.b == e.a) continue;  // impossible for rings of >= 3 vertices
+        const Point2 &o = s.points[shared], &p = s.points[other_e], &q = s.points[other_f];
+        if (orientation2(o, p, q) == Sign::Zero && dot_sign(o, p, o, q) == Sign::Positive)
+          throw Scene2DError("consecutive edges overlap at vertex " + where(o));
+        continue;
+      }
+      if (segments_intersect(a, b, c, d))
+        throw Scene2DError("polygon edges intersect: " + where(a) + "-" + where(b) + " and " + where(c) + "-" +
+                           where(d) + " (polygons must be simple and disjoint)");
+    }
+  }
+}
+
+}  // namespace
+
+Scene2D make_scene2d(const std::vector<PolygonInput2D>& polygons) {
+  Scene2D s;
+  s.num_objects = static_cast<int>(polygons.size());
+  for (int obj = 0; obj < s.num_objects; ++obj) {
+    const auto& rings = polygons[obj].rings;
+    if (rings.empty()) throw Scene2DError("polygon " + std::to_string(obj) + " has no vertices");
+    for (std::size_t r = 0; r < rings.size(); ++r) {
+      const auto& ring = rings[r];
+      const std::string name = "polygon " + std::to_string(obj) + (r ? " hole " + std::to_string(r - 1) : "");
+      if (ring.size() < 3) throw Scene2DError(name + " has fewer than 3 vertices");
+      const Exact area = twice_area(ring);
+      if (CGAL::sign(area) == CGAL::ZERO) throw Scene2DError(name + " has zero area");
+      const bool hole = r > 0;
+      // object on the left: outer ring counterclockwise (area > 0), hole clockwise
+      const bool reverse = hole ? (CGAL::sign(area) > 0) : (CGAL::sign(area) < 0);
+      Ring2D rg;
+      rg.first = s.num_vertices();
+      rg.size = static_cast<int>(ring.size());
+      rg.object = obj;
+      rg.hole = hole;
+      const int ring_id = static_cast<int>(s.rings.size());
+      for (int i = 0; i < rg.size; ++i) {
+        const int src = reverse ? (rg.size - 1 - i) : i;
+        s.points.push_back(ring[src]);
+        s.ring_of.push_back(ring_id);
+        s.input_index.push_back(src);
+        s.next.push_back(rg.first + (i + 1) % rg.size);
+        s.prev.push_back(rg.first + (i + rg.size - 1) % rg.size);
+      }
+      s.rings.push_back(rg);
+    }
+  }
+  // duplicate vertices
+  {
+    std::vector<int> order(s.num_vertices());
+    for (int i = 0; i < s.num_vertices(); ++i) order[i] = i;
+    std::sort(order.begin(), order.end(), [&](int a, int b) {
+      const Point2 &p = s.points[a], &q = s.points[b];
+      return p.x < q.x || (p.x == q.x && p.y < q.y);
+    });
+    for (std::size_t i = 1; i < order.size(); ++i)
+      if (s.points[order[i]] == s.points[order[i - 1]])
+        throw Scene2DError("duplicate vertex " + where(s.points[order[i]]));
+  }
+  check_edges(s);
+  // nesting: rings are now pairwise disjoint, so one vertex decides containment
+  const auto& P = s.points;
+  for (std::size_t r = 0; r < s.rings.size(); ++r) {
+    const Ring2D& R = s.rings[r];
+    const Point2& p = P[R.first];
+    if (R.hole) {
+      int o = static_cast<int>(r);
+      while (s.rings[o].hole) --o;
+      if (!inside_ring(P, s.rings[o].first, s.rings[o].size, p))
+        throw Scene2DError("hole of polygon " + std::to_string(R.object) + " is not inside its outer boundary");
+      for (std::size_t h = o + 1; h < s.rings.size() && s.rings[h].object == R.object; ++h)
+        if (h != r && inside_ring(P, s.rings[h].first, s.rings[h].size, p))
+          throw Scene2DError("holes of polygon " + std::to_string(R.object) + " are nested");
+      continue;
+    }
+    // an outer ring must not lie in another object's solid part
+    for (std::size_t o = 0; o < s.rings.size(); ++o) {
+      const Ring2D& O = s.rings[o];
+      if (O.hole || O.object == R.object) continue;
+      if (!inside_ring(P, O.first, O.size, p)) continue;
+      bool in_hole = false;
+      for (std::size_t h = o + 1; h < s.rings.size() && s.rings[h].object == O.object; ++h)
+        if (inside_ring(P, s.rings[h].first, s.rings[h].size, p)) in_hole = true;
+      if (!in_hole)
+        throw Scene2DError("polygons " + std::to_string(O.object) + " and " + std::to_string(R.object) +
+                           " overlap (one lies inside the other)");
+    }
+  }
+  return s;
+}
+
+Scene2D with_frame(const Scene2D& scene, double margin_ratio) {
+  Scene2D s = scene;
+  double lo_x = 0, lo_y = 0, hi_x = 1, hi_y = 1;
+  if (!s.points.empty()) {
+    lo_x = hi_x = s.points[0].ax;
+    lo_y = hi_y = s.points[0].ay;
+    for (const Point2& p : s.points) {
+      lo_x = std::min(lo_x, p.ix.inf());
+      hi_x = std::max(hi_x, p.ix.sup());
+      lo_y = std::min(lo_y, p.iy.inf());
+      hi_y = std::max(hi_y, p.iy.sup());
+    }
+  }
+  const double m = std::max(1.0, margin_ratio * std::max(hi_x - lo_x, hi_y - lo_y));
+  lo_x = std::floor(lo_x - m);
+  lo_y = std::floor(lo_y - m);
+  hi_x = std::ceil(hi_x + m);
+  hi_y = std::ceil(hi_y + m);
+  // frame: obstacle outside, so the free inside is on the right: clockwise
+  const Point2 box[4] = {{lo_x, lo_y}, {lo_x, hi_y}, {hi_x, hi_y}, {hi_x, lo_y}};
+  Ring2D rg;
+  rg.first = s.num_vertices();
+  rg.size = 4;
+  rg.object = s.num_objects;
+  rg.hole = true;
+  const int ring_id = static_cast<int>(s.rings.size());
+  for (int i = 0; i < 4; ++i) {
+    s.points.push_back(box[i]);
+    s.ring_of.push_back(ring_id);
+    s.input_index.push_back(i);
+    s.next.push_back(rg.first + (i + 1) % 4);
+    s.prev.push_back(rg.first + (i + 3) % 4);
+  }
+  s.rings.push_back(rg);
+  s.frame_ring = ring_id;
+  return s;
+}
+
+bool on_boundary(const Scene2D& scene, const Point2& p) {
+  for (const Ring2D& r : scene.rings)
+    if (on_ring(scene.points, r.first, r.size, p)) return true;
+  return false;
+}
+
+bool inside_obstacle(const Scene2D& scene, const Point2& p) {
+  if (on_boundary(scene, p)) return false;
+  // even-odd over all rings gives "inside some object" because rings are disjoint and properly nested,
+  // except for the frame, whose outside is the obstacle.
+  bool in = false;
+  for (std::size_t r = 0; r < scene.rings.size(); ++r) {
+    const Ring2D& R = scene.rings[r];
+    const bool inside = inside_ring(scene.points, R.first, R.size, p);
+    if (static_cast<int>(r) == scene.frame_ring) {
+      if (!inside) return true;
+      continue;
+    }
+    if (inside) in = !in;
+  }
+  return in;
+}
+
+}  // namespace exactvis
