@@ -167,7 +167,8 @@ std::optional<LineCandidate> real_line_in_cone(const PolyhedralCone6& cone, cons
   IntVec6 c = interior_point(cone);
   if (!cone.rays.empty()) {  // vary the interior point between attempts
     const auto& r = cone.rays[rng() % cone.rays.size()];
-    for (int k = 0; k < 6; ++k) c[k] += r[k] * static_cast<long>(1 + rng() % 7);
+    const long factor = 1 + static_cast<long>(rng() % 7);
+    for (int k = 0; k < 6; ++k) c[k] += r[k] * factor;
   }
   const IntVec6 a = push_inside(test.positive_point, c, +1);
   const IntVec6 b = push_inside(test.negative_point, c, -1);

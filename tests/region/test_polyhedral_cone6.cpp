@@ -6,7 +6,9 @@
 
 #include <gtest/gtest.h>
 
+#include <functional>
 #include <random>
+#include <set>
 
 using namespace exactvis::region;
 
@@ -106,4 +108,102 @@ TEST(PolyhedralCone6, RandomFeasiblePointsAreNotCutOff) {
     }
     for (const auto& p : pts) EXPECT_TRUE(in_open_cone(*cone, p));
   }
+}
+
+namespace {
+
+// Brute force: the extreme rays of the pointed cone {x : w_i . x >= 0} are the feasible directions spanned
+// by the 1-dimensional null spaces of 5-subsets of the constraints (normalised, deduplicated).
+std::set<std::vector<long>> brute_force_rays(const std::vector<IntVec6>& cons) {
+  std::set<std::vector<long>> out;
+  const std::size_t n = cons.size();
+  std::vector<std::size_t> idx(5);
+  std::function<void(std::size_t, std::size_t)> rec = [&](std::size_t start, std::size_t depth) {
+    if (depth == 5) {
+      std::vector<IntVec6> rows;
+      for (auto i : idx) rows.push_back(cons[i]);
+      if (rank_of(rows) != 5) return;
+      // Null vector by cofactors (generalised cross product of the 5 rows).
+      IntVec6 x;
+      for (int col = 0; col < 6; ++col) {
+        std::vector<IntVec6> minor;
+        std::array<std::array<mpq_class, 5>, 5> m;
+        for (int r = 0; r < 5; ++r) {
+          int cc = 0;
+          for (int k = 0; k < 6; ++k)
+            if (k != col) m[r][cc++] = rows[r][k];
+        }
+        // determinant by elimination
+        mpq_class det = 1;
+        for (int c = 0; c < 5; ++c) {
+          int p = c;
+          while (p < 5 && sgn(m[p][c]) == 0) ++p;
+          if (p == 5) {
+            det = 0;
+            break;
+          }
+          if (p != c) {
+            std::swap(m[p], m[c]);
+            det = -det;
+          }
+          det *= m[c][c];
+          for (int r = c + 1; r < 5; ++r) {
+            mpq_class f = m[r][c] / m[c][c];
+            for (int k = c; k < 5; ++k) m[r][k] -= f * m[c][k];
+          }
+        }
+        mpz_class d = det.get_num();
+        x[col] = (col % 2 == 0) ? d : mpz_class(-d);
+      }
+      for (int s : {1, -1}) {
+        IntVec6 y = x;
+        if (s < 0)
+          for (auto& c : y) c = -c;
+        bool ok = true;
+        for (const auto& w : cons) ok = ok && sgn(dot(w, y)) >= 0;
+        if (!ok) continue;
+        normalize(y);
+        std::vector<long> key;
+        for (const auto& c : y) key.push_back(c.get_si());
+        out.insert(key);
+      }
+      return;
+    }
+    for (std::size_t i = start; i < n; ++i) {
+      idx[depth] = i;
+      rec(i + 1, depth + 1);
+    }
+  };
+  rec(0, 0);
+  return out;
+}
+
+}  // namespace
+
+TEST(PolyhedralCone6, RaysMatchBruteForceEnumeration) {
+  std::mt19937_64 rng(31337);
+  int compared = 0;
+  for (int trial = 0; trial < 300; ++trial) {
+    std::optional<PolyhedralCone6> cone = whole_space_cone();
+    std::vector<IntVec6> all;
+    const int n = 7 + static_cast<int>(rng() % 5);
+    for (int i = 0; i < n && cone; ++i) {
+      IntVec6 w = random_vec(rng, 2);  // small range: many degenerate (non-simple) configurations
+      if (is_zero(w)) continue;
+      all.push_back(w);
+      cone = intersect_open_halfspace(*cone, w);
+    }
+    if (!cone || !cone->lineality.empty()) continue;
+    std::set<std::vector<long>> dd;
+    for (auto r : cone->rays) {
+      normalize(r);
+      std::vector<long> key;
+      for (const auto& c : r) key.push_back(c.get_si());
+      dd.insert(key);
+    }
+    EXPECT_EQ(dd.size(), cone->rays.size()) << "duplicate rays, trial " << trial;
+    EXPECT_EQ(dd, brute_force_rays(all)) << "trial " << trial;
+    ++compared;
+  }
+  EXPECT_GT(compared, 50);
 }
