@@ -1,0 +1,175 @@
+// Visibility polygons against CGAL's Triangular_expansion_visibility_2 and Rotational_sweep_visibility_2
+// (regularized) at thousands of random points, compared exactly; visible edge sets against the brute force.
+#include "scene2d_test_util.hpp"
+#include "skeleton/visibility_polygon_2d.hpp"
+
+#include <CGAL/Arr_naive_point_location.h>
+#include <CGAL/Arr_segment_traits_2.h>
+#include <CGAL/Arrangement_2.h>
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Rotational_sweep_visibility_2.h>
+#include <CGAL/Triangular_expansion_visibility_2.h>
+#include <gtest/gtest.h>
+
+#include <random>
+
+using namespace exactvis;
+using namespace exactvis::test2d;
+
+namespace {
+
+using K = CGAL::Exact_predicates_exact_constructions_kernel;
+using Traits = CGAL::Arr_segment_traits_2<K>;
+using Arr = CGAL::Arrangement_2<Traits>;
+using Pt = oracle2d::Pt;
+
+Pt to_pt(const K::Point_2& p) {
+  return {mpq_class(CGAL::exact(p.x())), mpq_class(CGAL::exact(p.y()))};
+}
+
+// Cyclic polygon without repeated or collinear vertices, starting at its lexicographically smallest vertex.
+std::vector<Pt> normalize(std::vector<Pt> p) {
+  auto orient = [](const Pt& a, const Pt& b, const Pt& c) {
+    return mpq_sgn(mpq_class((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x)).get_mpq_t());
+  };
+  bool changed = true;
+  while (changed && p.size() >= 3) {
+    changed = false;
+    for (std::size_t i = 0; i < p.size() && p.size() >= 3; ++i) {
+      const Pt &a = p[(i + p.size() - 1) % p.size()], &b = p[i], &c = p[(i + 1) % p.size()];
+      if (a == b || orient(a, b, c) == 0) {
+        p.erase(p.begin() + i);
+        changed = true;
+        break;
+      }
+    }
+  }
+  std::rotate(p.begin(), std::min_element(p.begin(), p.end()), p.end());
+  return p;
+}
+
+std::vector<Pt> face_polygon(Arr::Face_handle f) {
+  std::vector<Pt> out;
+  auto c = f->outer_ccb();
+  do out.push_back(to_pt(c->source()->point()));
+  while (++c != f->outer_ccb());
+  return out;
+}
+
+std::string show(const std::vector<Pt>& p) {
+  std::string s;
+  for (const auto& q : p) s += "(" + q.x.get_str() + "," + q.y.get_str() + ") ";
+  return s;
+}
+
+struct Fixture {
+  std::vector<oracle2d::Polygon> polys;  // scene + frame, for the oracle
+  Scene2D framed;
+  Arr arr;
+};
+
+bool make_fixture(std::uint64_t seed, int cells, Fixture& fx) {
+  const auto polys = oracle2d::random_grid_scene(seed, cells);
+  const auto s = try_scene(polys);
+  if (!s) return false;
+  fx.framed = with_frame(*s, 0.1);
+  fx.polys = polys;
+  fx.polys.push_back(frame_polygon(fx.framed));
+  std::vector<Traits::Segment_2> segs;
+  for (int v = 0; v < fx.framed.num_vertices(); ++v) {
+    const Point2 &a = fx.framed.points[v], &b = fx.framed.points[fx.framed.next[v]];
+    segs.emplace_back(K::Point_2(a.ax, a.ay), K::Point_2(b.ax, b.ay));  // inputs are doubles here
+  }
+  CGAL::insert(fx.arr, segs.begin(), segs.end());
+  return true;
+}
+
+// Random query points: half uniform doubles, half on a half-integer grid (collinear with many vertices).
+std::vector<Point2> query_points(const Fixture& fx, std::mt19937_64& rng, int count) {
+  const Ring2D& fr = fx.framed.rings[fx.framed.frame_ring];
+  double lo_x = 1e300, lo_y = 1e300, hi_x = -1e300, hi_y = -1e300;
+  for (int i = 0; i < fr.size; ++i) {
+    const Point2& p = fx.framed.points[fr.first + i];
+    lo_x = std::min(lo_x, p.ax), lo_y = std::min(lo_y, p.ay), hi_x = std::max(hi_x, p.ax), hi_y = std::max(hi_y, p.ay);
+  }
+  std::vector<Point2> out;
+  while (static_cast<int>(out.size()) < count) {
+    double x = std::uniform_real_distribution<double>(lo_x, hi_x)(rng);
+    double y = std::uniform_real_distribution<double>(lo_y, hi_y)(rng);
+    if (out.size() % 2) x = std::round(2 * x) / 2, y = std::round(2 * y) / 2;
+    const Pt q{mpq_class(x), mpq_class(y)};
+    if (oracle2d::on_boundary(fx.polys, q) || oracle2d::inside_object(fx.polys, q)) continue;
+    out.emplace_back(x, y);
+  }
+  return out;
+}
+
+}  // namespace
+
+TEST(VisibilityPolygon2D, MatchesCgalTriangularExpansionAndRotationalSweepExactly) {
+  std::mt19937_64 rng(2024);
+  int queries = 0, scenes = 0;
+  for (std::uint64_t seed = 100; scenes < 12 && seed < 400; ++seed) {
+    Fixture fx;
+    if (!make_fixture(seed, 2 + seed % 2, fx)) continue;
+    ++scenes;
+    CGAL::Triangular_expansion_visibility_2<Arr, CGAL::Tag_true> tev(fx.arr);
+    CGAL::Rotational_sweep_visibility_2<Arr, CGAL::Tag_true> rsv(fx.arr);
+    CGAL::Arr_naive_point_location<Arr> locator(fx.arr);
+    for (const Point2& q : query_points(fx, rng, 200)) {
+      const K::Point_2 cq(q.ax, q.ay);
+      const auto located = locator.locate(cq);
+      const Arr::Face_const_handle* face = boost::get<Arr::Face_const_handle>(&located);
+      ASSERT_TRUE(face) << "query point not in a face";
+      Arr out_tev, out_rsv;
+      const auto f_tev = tev.compute_visibility(cq, *face, out_tev);
+      const auto f_rsv = rsv.compute_visibility(cq, *face, out_rsv);
+      std::vector<Pt> mine;
+      for (const Point2& p : visibility_polygon(fx.framed, q).vertices) mine.push_back(to_pt(p));
+      const auto a = normalize(mine), b = normalize(face_polygon(f_tev)), c = normalize(face_polygon(f_rsv));
+      ASSERT_GE(a.size(), 3u);
+      ASSERT_TRUE(a == b) << "seed " << seed << " q=(" << q.ax << "," << q.ay << ")\nmine " << show(a) << "\nTEV  "
+                          << show(b);
+      ASSERT_TRUE(a == c) << "seed " << seed << " q=(" << q.ax << "," << q.ay << ")\nmine " << show(a) << "\nRSV  "
+                          << show(c);
+      ++queries;
+    }
+  }
+  EXPECT_GE(queries, 2000);
+}
+
+TEST(VisibilityPolygon2D, VisibleEdgesMatchBruteForce) {
+  std::mt19937_64 rng(7);
+  int queries = 0, scenes = 0;
+  for (std::uint64_t seed = 500; scenes < 6 && seed < 800; ++seed) {
+    Fixture fx;
+    if (!make_fixture(seed, 2, fx)) continue;
+    ++scenes;
+    for (const Point2& q : query_points(fx, rng, 40)) {
+      std::vector<std::array<Pt, 2>> mine;
+      for (int e : visible_edges(fx.framed, q)) {
+        Pt a = to_pt(fx.framed.points[e]), b = to_pt(fx.framed.points[fx.framed.next[e]]);
+        if (b < a) std::swap(a, b);
+        mine.push_back({a, b});
+      }
+      std::sort(mine.begin(), mine.end(), [](const auto& x, const auto& y) {
+        return x[0] < y[0] || (x[0] == y[0] && x[1] < y[1]);
+      });
+      const auto expected = oracle2d::brute_force_visible_edges(fx.polys, to_pt(q));
+      ASSERT_EQ(mine.size(), expected.size()) << "seed " << seed << " q=(" << q.ax << "," << q.ay << ")";
+      for (std::size_t i = 0; i < mine.size(); ++i) EXPECT_TRUE(mine[i][0] == expected[i][0] && mine[i][1] == expected[i][1]);
+      ++queries;
+    }
+  }
+  EXPECT_GE(queries, 200);
+}
+
+TEST(VisibilityPolygon2D, RejectsPointsOnBoundaryOrInsideObjects) {
+  const Scene2D s = with_frame(make_scene2d({{{{Point2(0.0, 0.0), Point2(1.0, 0.0), Point2(1.0, 1.0), Point2(0.0, 1.0)}}}}));
+  EXPECT_THROW(visibility_polygon(s, Point2(0.5, 0.5)), std::invalid_argument);
+  EXPECT_THROW(visibility_polygon(s, Point2(1.0, 0.5)), std::invalid_argument);
+  EXPECT_THROW(visibility_polygon(make_scene2d({{{{Point2(0.0, 0.0), Point2(1.0, 0.0), Point2(1.0, 1.0)}}}}),
+                                  Point2(3.0, 3.0)),
+               std::invalid_argument);
+  EXPECT_NO_THROW(visibility_polygon(s, Point2(1.5, 0.5)));
+}
