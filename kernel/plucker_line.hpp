@@ -6,8 +6,11 @@
 // factor reverses the direction. Real lines satisfy d . m = 0 (the Plücker quadric).
 //
 // side(a, b) = d_a . m_b + d_b . m_a  (the permuted inner product). It is 0 iff the lines meet or are
-// parallel; otherwise its sign says how they pass each other: side(a, b) > 0 iff, looking along b, the line a
-// passes b counterclockwise ("right-handed screw"), see docs/theory.md for the exact statement.
+// parallel; otherwise its sign says how they pass each other. For a through p_a and b through p_b,
+// side(a, b) = (p_a - p_b) . (d_a x d_b) = d_b . ((p_a - p_b) x d_a): side(a, b) > 0 iff a turns
+// counterclockwise about b by the right-hand rule (thumb along d_b), i.e. looking along b (d_b pointing away
+// from the eye) a passes b clockwise. For lines through points, side(line(p1,q1), line(p2,q2)) equals
+// orient3d(p1,q1,p2,q2) exactly. See docs/theory.md, section 2 (checked by tests/kernel/test_predicates.cpp).
 #include "kernel/vec3.hpp"
 
 namespace exactvis {
