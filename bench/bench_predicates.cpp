@@ -1,5 +1,7 @@
 // Throughput of the filtered predicates (interval filter, exact fallback) vs always-exact evaluation
 // (set_filter_enabled(false)), on random and on degenerate inputs. Prints a table (see docs/performance.md).
+// Double inputs fall back to CGAL::Mpzf; the "exact Gmpq" column runs the same predicates on the same points
+// converted to rationals (RationalPoint3 overloads, always exact), i.e. the GMP-rational exact path.
 //
 // Usage: bench_predicates [N]   (N evaluations per row, default 200000)
 #include "kernel/filtered_predicate.hpp"
@@ -18,6 +20,9 @@ namespace {
 
 struct Quad {
   Point3 a, b, c, d;
+};
+struct RQuad {
+  RationalPoint3 a, b, c, d;
 };
 
 std::vector<Quad> random_quads(int n, std::uint64_t seed) {
@@ -50,8 +55,8 @@ struct Row {
   long checksum = 0;
 };
 
-template <class F>
-Row run(const std::vector<Quad>& quads, bool filter, const char* counter_name, F&& f) {
+template <class Q, class F>
+Row run(const std::vector<Q>& quads, bool filter, const char* counter_name, F&& f) {
   set_filter_enabled(filter);
   reset_predicate_counters();
   Row r;
@@ -79,34 +84,43 @@ int main(int argc, char** argv) {
   }
   const auto random = random_quads(n, 1);
   const auto degenerate = degenerate_quads(n, 2);
-  auto orient = [](const Quad& q) { return orient3d(q.a, q.b, q.c, q.d); };
-  auto sidef = [](const Quad& q) { return side_of_lines(q.a, q.b, q.c, q.d); };
+  auto orient = [](const auto& q) { return orient3d(q.a, q.b, q.c, q.d); };
+  auto sidef = [](const auto& q) { return side_of_lines(q.a, q.b, q.c, q.d); };
+  auto rational = [](const std::vector<Quad>& v) {
+    std::vector<RQuad> r;
+    for (const auto& q : v) r.push_back({to_rational(q.a), to_rational(q.b), to_rational(q.c), to_rational(q.d)});
+    return r;
+  };
+  const auto random_r = rational(random), degenerate_r = rational(degenerate);
 
   std::printf("N = %d evaluations per row (Mop/s = million predicate calls per second)\n\n", n);
-  std::printf("%-14s %-11s %13s %13s %9s %16s\n", "predicate", "input", "filtered", "always-exact", "ratio",
-              "exact fallbacks");
+  std::printf("%-14s %-11s %13s %13s %13s %9s %9s %10s\n", "predicate", "input", "filtered", "exact Mpzf",
+              "exact Gmpq", "filt/Mpzf", "filt/Gmpq", "fallbacks");
   struct Case {
     const char* pred;
     const char* counter;
     const char* input;
     const std::vector<Quad>* data;
+    const std::vector<RQuad>* rdata;
     bool is_orient;
   };
-  const Case cases[] = {{"orient3d", "orient3d", "random", &random, true},
-                        {"orient3d", "orient3d", "degenerate", &degenerate, true},
-                        {"side_of_lines", "side_of_lines", "random", &random, false},
-                        {"side_of_lines", "side_of_lines", "degenerate", &degenerate, false}};
+  const Case cases[] = {{"orient3d", "orient3d", "random", &random, &random_r, true},
+                        {"orient3d", "orient3d", "degenerate", &degenerate, &degenerate_r, true},
+                        {"side_of_lines", "side_of_lines", "random", &random, &random_r, false},
+                        {"side_of_lines", "side_of_lines", "degenerate", &degenerate, &degenerate_r, false}};
   for (const auto& c : cases) {
     const Row f = c.is_orient ? run(*c.data, true, c.counter, orient) : run(*c.data, true, c.counter, sidef);
     const Row e = c.is_orient ? run(*c.data, false, c.counter, orient) : run(*c.data, false, c.counter, sidef);
-    if (f.checksum != e.checksum) {
+    const Row g = c.is_orient ? run(*c.rdata, false, c.counter, orient) : run(*c.rdata, false, c.counter, sidef);
+    if (f.checksum != e.checksum || f.checksum != g.checksum) {
       std::fprintf(stderr, "bench_predicates: error: filtered and exact results differ\n");
       return 1;
     }
     char fb[64];
     std::snprintf(fb, sizeof fb, "%.2f%%", 100.0 * double(f.exact) / n);
-    std::printf("%-14s %-11s %8.2f Mop/s %7.2f Mop/s %8.1fx %16s\n", c.pred, c.input, n / f.seconds / 1e6,
-                n / e.seconds / 1e6, e.seconds / f.seconds, fb);
+    std::printf("%-14s %-11s %7.2f Mop/s %7.2f Mop/s %7.2f Mop/s %8.1fx %8.1fx %10s\n", c.pred, c.input,
+                n / f.seconds / 1e6, n / e.seconds / 1e6, n / g.seconds / 1e6, e.seconds / f.seconds,
+                g.seconds / f.seconds, fb);
   }
   return 0;
 }

@@ -1,5 +1,6 @@
 #include "kernel/filtered_predicate.hpp"
 
+#include <algorithm>
 #include <mutex>
 
 namespace exactvis {
@@ -22,8 +23,15 @@ PredicateCounter::PredicateCounter(std::string n) : name(std::move(n)) {
 
 std::vector<PredicateCounterSnapshot> predicate_counters() {
   std::lock_guard<std::mutex> lock(registry_mutex());
+  // One entry per name: a predicate implemented as a template (double and Exact inputs) has one counter per
+  // instantiation under the same name; they are summed.
   std::vector<PredicateCounterSnapshot> out;
-  for (auto* c : registry()) out.push_back({c->name, c->calls.load(), c->exact.load()});
+  for (auto* c : registry()) {
+    auto it = std::find_if(out.begin(), out.end(), [&](const auto& s) { return s.name == c->name; });
+    if (it == out.end()) it = out.insert(out.end(), {c->name, 0, 0});
+    it->calls += c->calls.load();
+    it->exact += c->exact.load();
+  }
   return out;
 }
 

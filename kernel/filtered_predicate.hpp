@@ -33,7 +33,8 @@ struct PredicateCounterSnapshot {
   std::uint64_t exact = 0;
 };
 
-// All counters registered so far (one per predicate), and resetting them (for tests and benchmarks).
+// All counters registered so far, one entry per predicate name (counters sharing a name are summed), and
+// resetting them (for tests and benchmarks).
 std::vector<PredicateCounterSnapshot> predicate_counters();
 void reset_predicate_counters();
 // Total exact-path evaluations over all predicates.
@@ -48,7 +49,10 @@ struct NumberTag {
   using type = T;
 };
 
-template <class Expr>
+// ExactNT is the number type of layer 2: Exact (GMP rationals) by default. A division-free predicate whose
+// inputs are all doubles may pass CGAL::Mpzf (exact multiprecision floats, CGAL/Mpzf.h), which computes the
+// same exact value several times faster (see docs/performance.md, "Predicates").
+template <class ExactNT = Exact, class Expr>
 Sign filtered_sign(PredicateCounter& counter, Expr&& expr) {
   counter.calls.fetch_add(1, std::memory_order_relaxed);
   if (filter_enabled()) {
@@ -59,8 +63,8 @@ Sign filtered_sign(PredicateCounter& counter, Expr&& expr) {
     if (r.inf() == 0 && r.sup() == 0) return Sign::Zero;
   }
   counter.exact.fetch_add(1, std::memory_order_relaxed);
-  const Exact e = expr(NumberTag<Exact>{});
-  return exact_sign(e);
+  const ExactNT e = expr(NumberTag<ExactNT>{});
+  return sign_of(static_cast<int>(CGAL::sign(e)));
 }
 
 // Conversion of an input value to the number type a predicate is evaluated in.

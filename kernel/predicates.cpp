@@ -1,12 +1,19 @@
 #include "kernel/predicates.hpp"
 
+#include <CGAL/Mpzf.h>
+
 namespace exactvis {
 namespace {
+
+// Exact number type of the fallback: for double inputs the (division-free) predicates below are evaluated
+// with CGAL::Mpzf, exact and faster than rationals; for rational inputs with Exact.
+template <class C>
+using ExactFor = std::conditional_t<std::is_same_v<C, double>, CGAL::Mpzf, Exact>;
 
 template <class C>
 Sign side_of_lines_impl(const Vec3<C>& p1, const Vec3<C>& q1, const Vec3<C>& p2, const Vec3<C>& q2) {
   static PredicateCounter counter("side_of_lines");
-  return filtered_sign(counter, [&](auto nt) {
+  return filtered_sign<ExactFor<C>>(counter, [&](auto nt) {
     using NT = typename decltype(nt)::type;
     const auto a = line_through(point_as<NT>(p1), point_as<NT>(q1));
     const auto b = line_through(point_as<NT>(p2), point_as<NT>(q2));
@@ -17,7 +24,7 @@ Sign side_of_lines_impl(const Vec3<C>& p1, const Vec3<C>& q1, const Vec3<C>& p2,
 template <class C>
 Sign orient3d_impl(const Vec3<C>& a, const Vec3<C>& b, const Vec3<C>& c, const Vec3<C>& d) {
   static PredicateCounter counter("orient3d");
-  return filtered_sign(counter, [&](auto nt) {
+  return filtered_sign<ExactFor<C>>(counter, [&](auto nt) {
     using NT = typename decltype(nt)::type;
     const auto A = point_as<NT>(a);
     return dot(cross(point_as<NT>(b) - A, point_as<NT>(c) - A), point_as<NT>(d) - A);
@@ -27,7 +34,7 @@ Sign orient3d_impl(const Vec3<C>& a, const Vec3<C>& b, const Vec3<C>& c, const V
 template <class C>
 Sign orient2d_projected_impl(const Vec3<C>& a, const Vec3<C>& b, const Vec3<C>& c, int axis) {
   static PredicateCounter counter("orient2d_projected");
-  return filtered_sign(counter, [&](auto nt) {
+  return filtered_sign<ExactFor<C>>(counter, [&](auto nt) {
     using NT = typename decltype(nt)::type;
     const int u = (axis + 1) % 3, v = (axis + 2) % 3;
     const NT au = as<NT>(a[u]), av = as<NT>(a[v]);
@@ -40,7 +47,7 @@ bool collinear_impl(const Vec3<C>& a, const Vec3<C>& b, const Vec3<C>& c) {
   static PredicateCounter counter("collinear");
   // The cross product (b-a) x (c-a) vanishes iff collinear; test its three components.
   for (int k = 0; k < 3; ++k) {
-    const Sign s = filtered_sign(counter, [&](auto nt) {
+    const Sign s = filtered_sign<ExactFor<C>>(counter, [&](auto nt) {
       using NT = typename decltype(nt)::type;
       const auto A = point_as<NT>(a);
       return cross(point_as<NT>(b) - A, point_as<NT>(c) - A)[k];

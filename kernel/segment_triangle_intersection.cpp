@@ -1,5 +1,7 @@
 #include "kernel/segment_triangle_intersection.hpp"
 
+#include <CGAL/Mpzf.h>
+
 #include <algorithm>
 
 namespace exactvis {
@@ -11,7 +13,8 @@ template <class C>
 Sign orient2d_projected_midpoint(const Vec3<C>& p, const Vec3<C>& q, const Vec3<C>& a, const Vec3<C>& b,
                                  int axis) {
   static PredicateCounter counter("orient2d_projected_midpoint");
-  return filtered_sign(counter, [&](auto nt) {
+  using ExactNT = std::conditional_t<std::is_same_v<C, double>, CGAL::Mpzf, Exact>;  // division-free
+  return filtered_sign<ExactNT>(counter, [&](auto nt) {
     using NT = typename decltype(nt)::type;
     const int u = (axis + 1) % 3, v = (axis + 2) % 3;
     const NT pu = as<NT>(p[u]), pv = as<NT>(p[v]);
