@@ -30,7 +30,9 @@ const exactvis::app::CommandRegistration registration("generate", 20, [](CLI::Ap
   sub->add_option("--triangles,-n", opts->triangles, "Number of triangles (10 .. 10^7)")
       ->capture_default_str()
       ->check(CLI::Range(std::int64_t{10}, std::int64_t{10'000'000}));
-  sub->add_option("--seed,-s", opts->seed, "Random seed")->capture_default_str();
+  sub->add_option("--seed,-s", opts->seed, "Random seed (0 .. 2^64-1)")
+      ->capture_default_str()
+      ->check(CLI::NonNegativeNumber);
   sub->add_option("-o,--output", opts->output, "Output file (.obj with a group per object, .off, .ply, .stl)")
       ->required();
   return [opts]() { return run_generate(*opts); };

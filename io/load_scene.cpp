@@ -166,14 +166,21 @@ struct OpenMeshResult {
   std::vector<std::vector<int>> faces;
 };
 
-OpenMeshResult read_with_openmesh(const std::string& path) {
+// Reads `path` with OpenMesh; if `normalized` is given, OpenMesh reads that text instead (as format `ext`).
+OpenMeshResult read_with_openmesh(const std::string& path, const std::string* normalized = nullptr,
+                                  const std::string& ext = "") {
   OmMesh mesh;
   RecordingImporter importer(mesh);
   OpenMesh::IO::Options opt;
   bool ok = false;
   try {
     QuietOpenMesh quiet;
-    ok = OpenMesh::IO::IOManager().read(path, importer, opt);
+    if (normalized) {
+      std::istringstream in(*normalized);
+      ok = OpenMesh::IO::IOManager().read(in, ext, importer, opt);
+    } else {
+      ok = OpenMesh::IO::IOManager().read(path, importer, opt);
+    }
   } catch (const std::bad_alloc&) {
     fail(path, "OpenMesh ran out of memory reading it (corrupt element counts?)");
   } catch (const std::exception& e) {
@@ -211,11 +218,15 @@ void check_same_points(const std::string& path, const std::vector<Point3>& exact
   if (exact.size() != om.size())
     fail(path, "OpenMesh read " + std::to_string(om.size()) + " vertices, the file has " +
                    std::to_string(exact.size()));
-  const double fmax = std::numeric_limits<float>::max();
+  // Decimal -> double -> float may differ from decimal -> float by one float ulp (double rounding); outside
+  // float's normal range OpenMesh's stream parsing is not comparable at all.
+  const double fmax = std::numeric_limits<float>::max(), fmin = std::numeric_limits<float>::min();
   for (size_t i = 0; i < exact.size(); ++i)
     for (int k = 0; k < 3; ++k) {
       const double d = exact[i][k];
-      if (std::fabs(d) <= fmax && static_cast<float>(d) != om[i][k])
+      const float f = static_cast<float>(d);
+      const bool comparable = std::fabs(d) <= fmax && std::fabs(d) >= fmin;
+      if (comparable && om[i][k] != f && om[i][k] != std::nextafter(f, 2 * f) && om[i][k] != std::nextafter(f, 0.0f))
         fail(path, "vertex " + std::to_string(i) + ": OpenMesh read coordinate " + std::to_string(om[i][k]) +
                        ", the file says " + std::to_string(d));
     }
@@ -367,12 +378,39 @@ RawMesh load_off(const std::string& path, const std::string& text) {
     if (static_cast<long long>(lines.size()) < *nv + *nf)
       fail(path, "truncated: header declares " + std::to_string(*nf) + " faces, file has only " +
                      std::to_string(lines.size() - *nv));
-    const OpenMeshResult om = read_with_openmesh(path);
+    // Face lines: "n i1 ... in [colour]"; OpenMesh must read the same lists.
+    std::vector<std::vector<int>> faces;
+    for (long long i = *nv; i < *nv + *nf; ++i) {
+      auto t = tokens(lines[i].second);
+      const std::string where = "line " + std::to_string(lines[i].first) + ": ";
+      auto n = parse_int(t[0]);
+      if (!n || *n < 3) fail(path, where + "bad face (needs a vertex count of at least 3)");
+      if (static_cast<long long>(t.size()) < 1 + *n) fail(path, where + "face lists fewer vertices than its count");
+      std::vector<int> face;
+      for (long long k = 1; k <= *n; ++k) {
+        auto v = parse_int(t[k]);
+        if (!v) fail(path, where + "bad vertex index '" + std::string(t[k]) + "'");
+        if (*v < 0 || *v >= *nv)
+          fail(path, where + "vertex index " + std::to_string(*v) + " out of range [0, " + std::to_string(*nv) + ")");
+        face.push_back(static_cast<int>(*v));
+      }
+      faces.push_back(std::move(face));
+    }
+    // OpenMesh's OFF reader does not skip '#' comments (it misreads counts and may allocate wildly), so it
+    // reads the file with comments and blank lines removed.
+    std::string clean = std::string(head[0]) + "\n" + std::string(head[1]) + " " + std::string(head[2]) + " " +
+                        std::string(head[3]) + "\n";
+    for (const auto& l : lines) {
+      clean.append(l.second.data(), l.second.size());
+      clean += '\n';
+    }
+    const OpenMeshResult om = read_with_openmesh(path, &clean, "off");
     check_same_points(path, m.vertices, om.points);
     if (static_cast<long long>(om.faces.size()) != *nf)
       fail(path, "OpenMesh read " + std::to_string(om.faces.size()) + " faces, the header declares " +
                      std::to_string(*nf));
-    m.faces = om.faces;
+    if (om.faces != faces) fail(path, "OpenMesh read different face lists than the file has");
+    m.faces = std::move(faces);
   } else {
     const OpenMeshResult om = read_with_openmesh(path);
     for (const auto& p : om.points) m.vertices.push_back({p[0], p[1], p[2]});
@@ -470,6 +508,11 @@ RawMesh load_stl(const std::string& path, const std::string& text) {
       return true;
     });
     if (corners.size() % 3 != 0) fail(path, "a facet does not have 3 vertices (truncated?)");
+    // Without counts, a cut-off file is recognised by its missing last line.
+    const auto last = text.find_last_not_of(" \t\r\n");
+    const auto line_start = text.find_last_of('\n', last);
+    auto t = tokens(std::string_view(text).substr(line_start == std::string::npos ? 0 : line_start + 1));
+    if (t.empty() || t[0] != "endsolid") fail(path, "truncated ASCII STL (does not end with 'endsolid')");
   } else {
     if (text.size() < 84) fail(path, "truncated binary STL (shorter than its 84-byte header)");
     std::uint32_t n = 0;

@@ -58,8 +58,8 @@ bool write_with_openmesh(const std::string& file, const Scene& scene) {
   vh.reserve(scene.vertices.size());
   for (const auto& p : scene.vertices) vh.push_back(mesh.add_vertex(OmMesh::Point(p.x, p.y, p.z)));
   struct Quiet {
-    Quiet() { ::omerr().disable(); }
-    ~Quiet() { ::omerr().enable(); }
+    Quiet() { ::omerr().disable(); ::omlog().disable(); ::omout().disable(); }
+    ~Quiet() { ::omerr().enable(); ::omlog().enable(); ::omout().enable(); }
   } quiet;
   for (const auto& t : scene.triangles) {
     std::vector<OmMesh::VertexHandle> f{vh[t.v[0]], vh[t.v[1]], vh[t.v[2]]};
