@@ -205,13 +205,6 @@ bool oracle_point_in_open_box(const QVec& p, const QVec& lo, const QVec& hi) {
   return lo.x < p.x && p.x < hi.x && lo.y < p.y && p.y < hi.y && lo.z < p.z && p.z < hi.z;
 }
 
-bool is_zero_in_extension(const mpq_class& x, const mpq_class& y, const mpq_class& root) {
-  if (sgn(y) == 0 || sgn(root) == 0) return sgn(x) == 0;
-  if (sgn(x) == 0) return false;
-  if (sgn(x) == sgn(y)) return false;
-  return x * x == y * y * root;
-}
-
 namespace {
 // (x0 + x1 r)(y0 + y1 r) with r^2 = root.
 std::pair<mpq_class, mpq_class> mul(const mpq_class& x0, const mpq_class& x1, const mpq_class& y0,
@@ -219,6 +212,51 @@ std::pair<mpq_class, mpq_class> mul(const mpq_class& x0, const mpq_class& x1, co
   return {x0 * y0 + x1 * y1 * root, x0 * y1 + x1 * y0};
 }
 }  // namespace
+
+bool is_zero_in_extension(const mpq_class& x, const mpq_class& y, const mpq_class& root) {
+  if (sgn(y) == 0 || sgn(root) == 0) return sgn(x) == 0;
+  if (sgn(x) == 0) return false;
+  if (sgn(x) == sgn(y)) return false;
+  return x * x == y * y * root;
+}
+
+int sign_in_extension(const mpq_class& x, const mpq_class& y, const mpq_class& root) {
+  const int sx = sgn(x), sy = sgn(root) == 0 ? 0 : sgn(y);
+  if (sy == 0) return sx;
+  if (sx == 0 || sx == sy) return sy;
+  const int c = cmp(mpq_class(x * x), mpq_class(y * y * root));  // |x| vs |y| sqrt(root)
+  return c > 0 ? sx : (c < 0 ? sy : 0);
+}
+
+int side_sign(const RootLine& x, const QLine& l) {
+  const std::array<mpq_class, 6> v = {l.d.x, l.d.y, l.d.z, l.m.x, l.m.y, l.m.z};
+  mpq_class s0 = 0, s1 = 0;
+  for (int i = 0; i < 3; ++i) {
+    s0 += x.a[i] * v[i + 3] + x.a[i + 3] * v[i];
+    s1 += x.b[i] * v[i + 3] + x.b[i + 3] * v[i];
+  }
+  return sign_in_extension(s0, s1, x.root);
+}
+
+bool on_line(const RootPoint& p, const RootLine& x) {
+  const mpq_class root = sgn(p.root) != 0 ? p.root : x.root;
+  // (p x d)_i = p_j d_k - p_k d_j, compared with m_i, all in Q(sqrt(root)).
+  for (int i = 0; i < 3; ++i) {
+    const int j = (i + 1) % 3, k = (i + 2) % 3;
+    const auto [u0, u1] = mul(p.a[j], p.b[j], x.a[k], x.b[k], root);
+    const auto [w0, w1] = mul(p.a[k], p.b[k], x.a[j], x.b[j], root);
+    if (!is_zero_in_extension(u0 - w0 - x.a[i + 3], u1 - w1 - x.b[i + 3], root)) return false;
+  }
+  return true;
+}
+
+bool on_line(const RootPoint& p, const QLine& l) {
+  RootLine x;
+  const std::array<mpq_class, 6> v = {l.d.x, l.d.y, l.d.z, l.m.x, l.m.y, l.m.z};
+  for (int i = 0; i < 6; ++i) x.a[i] = v[i], x.b[i] = 0;
+  x.root = p.root;
+  return on_line(p, x);
+}
 
 bool check_transversal(const RootLine& x, const std::array<QLine, 4>& lines, std::string* why) {
   bool d_zero = true;

@@ -76,6 +76,19 @@ struct RootLine {
 };
 // x + y sqrt(root) == 0, exactly (root >= 0).
 bool is_zero_in_extension(const mpq_class& x, const mpq_class& y, const mpq_class& root);
+// Sign of x + y sqrt(root) (root >= 0), exactly.
+int sign_in_extension(const mpq_class& x, const mpq_class& y, const mpq_class& root);
+// sign(side(x, l)) for a line over Q(sqrt(root)) and a rational line.
+int side_sign(const RootLine& x, const QLine& l);
+// Point with coordinates a[i] + b[i] sqrt(root).
+struct RootPoint {
+  std::array<mpq_class, 3> a, b;
+  mpq_class root;
+};
+// True iff p lies on line x (p x d = m, exactly in Q(sqrt(root))); the roots of p and x must agree or be 0.
+bool on_line(const RootPoint& p, const RootLine& x);
+// True iff p lies on the rational line l.
+bool on_line(const RootPoint& p, const QLine& l);
 // Checks by substitution that x is a real line (d != 0, d.m = 0) meeting each of the four lines
 // (side = 0). On failure returns false and says why in *why.
 bool check_transversal(const RootLine& x, const std::array<QLine, 4>& lines, std::string* why);
