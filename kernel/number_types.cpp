@@ -1,6 +1,7 @@
 #include "kernel/number_types.hpp"
 
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace exactvis {
@@ -49,6 +50,16 @@ Exact parse_rational(const std::string& text) {
   if (used != text.size()) throw std::invalid_argument("not a number: '" + text + "'");
   if (!std::isfinite(v)) throw std::invalid_argument("non-finite number: '" + text + "'");
   return Exact(v);
+}
+
+std::pair<double, double> enclosing_interval(const Exact& x) {
+  const double d = mpq_get_d(x.mpq());
+  const double inf = std::numeric_limits<double>::infinity();
+  if (!std::isfinite(d)) return {-inf, inf};
+  if (mpz_cmp_ui(mpq_denref(x.mpq()), 1) == 0 && static_cast<double>(d) == d &&
+      mpz_sizeinbase(mpq_numref(x.mpq()), 2) <= 53)
+    return {d, d};  // small integers convert exactly
+  return {std::nextafter(d, -inf), std::nextafter(d, inf)};
 }
 
 bool exact_double(const Exact& x, double* out) {

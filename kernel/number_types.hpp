@@ -9,6 +9,7 @@
 #include <CGAL/Interval_nt.h>
 
 #include <string>
+#include <utility>
 
 namespace exactvis {
 
@@ -33,6 +34,10 @@ inline Exact to_exact(double x) { return Exact(x); }
 std::string to_rational_string(const Exact& x);
 // Parse "num/den", "num" or a decimal/scientific double literal (taken exactly as the double it denotes).
 Exact parse_rational(const std::string& text);
+// An interval of doubles containing x: mpq_get_d truncates (error < 1 ulp), widened by one ulp each way.
+// Much cheaper than CGAL::to_interval(Gmpq), which goes through MPFR; the filter only needs an enclosure.
+std::pair<double, double> enclosing_interval(const Exact& x);
+
 // True iff x is exactly a finite double; then *out receives it.
 bool exact_double(const Exact& x, double* out);
 

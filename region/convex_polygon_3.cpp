@@ -9,6 +9,21 @@ Plane3 plane_through(const RationalPoint3& a, const RationalPoint3& b, const Rat
   return {n, dot(n, a)};
 }
 
+namespace {
+template <class C>
+Sign plane_side_impl(const Plane3& plane, const Vec3<C>& x) {
+  static PredicateCounter counter("plane_side");
+  return filtered_sign(counter, [&](auto nt) {
+    using NT = typename decltype(nt)::type;
+    return as<NT>(plane.normal.x) * as<NT>(x.x) + as<NT>(plane.normal.y) * as<NT>(x.y) +
+           as<NT>(plane.normal.z) * as<NT>(x.z) - as<NT>(plane.offset);
+  });
+}
+}  // namespace
+
+Sign plane_side(const Plane3& plane, const Point3& x) { return plane_side_impl(plane, x); }
+Sign plane_side(const Plane3& plane, const RationalPoint3& x) { return plane_side_impl(plane, x); }
+
 Plane3 plane_of(const Polygon3& poly) {
   for (std::size_t i = 2; i < poly.size(); ++i)
     if (!collinear(poly[0], poly[1], poly[i])) return plane_through(poly[0], poly[1], poly[i]);

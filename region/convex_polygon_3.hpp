@@ -16,6 +16,10 @@ struct Plane3 {
   Plane3 flipped() const { return {-normal, -offset}; }
 };
 
+// Exact sign of plane.value(x), filtered (interval arithmetic first).
+Sign plane_side(const Plane3& plane, const Point3& x);
+Sign plane_side(const Plane3& plane, const RationalPoint3& x);
+
 // The plane through a, b, c with normal (b - a) x (c - a). Requires non-collinear points.
 Plane3 plane_through(const RationalPoint3& a, const RationalPoint3& b, const RationalPoint3& c);
 // The plane of a polygon (through its first three non-collinear vertices).

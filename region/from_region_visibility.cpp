@@ -23,30 +23,57 @@ Box3 enclosing_box(const std::vector<RationalPoint3>& pts) {
   Box3 b{{inf, inf, inf}, {-inf, -inf, -inf}};
   for (const auto& p : pts)
     for (int k = 0; k < 3; ++k) {
-      const auto iv = CGAL::to_interval(p[k]);
+      const auto iv = enclosing_interval(p[k]);
       b.lo[k] = std::min(b.lo[k], iv.first);
       b.hi[k] = std::max(b.hi[k], iv.second);
     }
   return b;
 }
 
-// A random point with rational coordinates in the relative interior of a convex polygon
-// (strictly positive barycentric weights).
-RationalPoint3 random_interior_point(const Polygon3& poly, std::mt19937_64& rng) {
+// Random strictly positive barycentric weights for a polygon's vertices.
+std::vector<long> random_weights(std::size_t n, std::mt19937_64& rng) {
+  std::vector<long> w(n);
+  for (auto& x : w) x = 1 + static_cast<long>(rng() % (1u << 20));
+  return w;
+}
+
+// The point with those weights: exact (rational, in the relative interior of the polygon) ...
+RationalPoint3 weighted_point(const Polygon3& poly, const std::vector<long>& w) {
   RationalPoint3 acc{Exact(0), Exact(0), Exact(0)};
   long total = 0;
-  for (const auto& v : poly) {
-    const long w = 1 + static_cast<long>(rng() % (1u << 20));
-    acc = acc + Exact(w) * v;
-    total += w;
+  for (std::size_t i = 0; i < poly.size(); ++i) {
+    acc = acc + Exact(w[i]) * poly[i];
+    total += w[i];
   }
   const Exact t(total);
   return {acc.x / t, acc.y / t, acc.z / t};
 }
 
+// ... and its double approximation (for heuristics only: sample ordering).
+Point3 weighted_point_approx(const std::vector<Point3>& poly, const std::vector<long>& w) {
+  Point3 acc{0, 0, 0};
+  double total = 0;
+  for (std::size_t i = 0; i < poly.size(); ++i) {
+    acc = acc + static_cast<double>(w[i]) * poly[i];
+    total += static_cast<double>(w[i]);
+  }
+  return {acc.x / total, acc.y / total, acc.z / total};
+}
+
+std::vector<Point3> approx(const Polygon3& poly) {
+  std::vector<Point3> out;
+  for (const auto& p : poly) out.push_back({CGAL::to_double(p.x), CGAL::to_double(p.y), CGAL::to_double(p.z)});
+  return out;
+}
+
+RationalPoint3 random_interior_point(const Polygon3& poly, std::mt19937_64& rng) {
+  return weighted_point(poly, random_weights(poly.size(), rng));
+}
+
 struct Occluder {
   std::int64_t triangle = -1;
   std::array<RationalPoint3, 3> corners;
+  std::array<Point3, 3> corners_d;  // the same corners as input doubles
   std::vector<IntVec6> edges;  // functionals of the clipped polygon's edges, in loop order
   int blocked_samples = 0;
 };
@@ -86,18 +113,20 @@ std::vector<Occluder> prepare_occluders(const Scene& scene, const std::vector<st
   std::vector<Occluder> out;
   for (const std::int64_t idx : candidates) {
     if (idx == target) continue;
-    const auto tri = triangle_points(scene, idx);
+    const auto& st = scene.triangles[idx];
     bool culled = false;
     for (const auto& pl : planes) {
       // Entirely on the closed outer side of a supporting plane: meets the shaft at most in that plane,
       // which only a measure-zero set of stabbing segments touches (docs/theory.md §5.4).
-      if (CGAL::sign(pl.value(tri[0])) <= 0 && CGAL::sign(pl.value(tri[1])) <= 0 &&
-          CGAL::sign(pl.value(tri[2])) <= 0) {
+      if (plane_side(pl, scene.corner(st, 0)) != Sign::Positive &&
+          plane_side(pl, scene.corner(st, 1)) != Sign::Positive &&
+          plane_side(pl, scene.corner(st, 2)) != Sign::Positive) {
         culled = true;
         break;
       }
     }
     if (culled) continue;
+    const auto tri = triangle_points(scene, idx);
     Polygon3 clipped = clip_polygon({tri[0], tri[1], tri[2]}, pair.source_plane);
     clipped = clip_polygon(clipped, pair.target_plane);
     if (is_degenerate(clipped)) continue;
@@ -105,6 +134,7 @@ std::vector<Occluder> prepare_occluders(const Scene& scene, const std::vector<st
     Occluder occ;
     occ.triangle = idx;
     occ.corners = tri;
+    occ.corners_d = {scene.corner(st, 0), scene.corner(st, 1), scene.corner(st, 2)};
     for (std::size_t i = 0; i < clipped.size(); ++i)
       occ.edges.push_back(side_functional(line_through(clipped[i], clipped[(i + 1) % clipped.size()])));
     out.push_back(std::move(occ));
@@ -310,18 +340,23 @@ class PairQuery {
     return std::nullopt;
   }
 
+  // Sample segments are cast with double endpoints (the counts only order the occluders); a sample that
+  // looks free is redone with its exact rational endpoints and accepted only after the exact check.
   std::optional<Witness> sample() {
+    const auto src = approx(pair_.source), dst = approx(pair_.target);
     for (int s = 0; s < options_.samples; ++s) {
       ++stats_.samples_cast;
-      const RationalPoint3 p = random_interior_point(pair_.source, rng_);
-      const RationalPoint3 q = random_interior_point(pair_.target, rng_);
+      const auto ws = random_weights(src.size(), rng_), wt = random_weights(dst.size(), rng_);
+      const Point3 p = weighted_point_approx(src, ws), q = weighted_point_approx(dst, wt);
       bool free = true;
       for (auto& occ : occluders_)
-        if (open_segment_meets_closed_triangle(p, q, occ.corners[0], occ.corners[1], occ.corners[2])) {
+        if (open_segment_meets_closed_triangle(p, q, occ.corners_d[0], occ.corners_d[1], occ.corners_d[2])) {
           ++occ.blocked_samples;
           free = false;
         }
-      if (free && segment_is_free(scene_, candidates_, p, q, target_)) return Witness{p, q};
+      if (!free) continue;
+      const RationalPoint3 pe = weighted_point(pair_.source, ws), qe = weighted_point(pair_.target, wt);
+      if (segment_is_free(scene_, candidates_, pe, qe, target_)) return Witness{pe, qe};
     }
     return std::nullopt;
   }
@@ -343,7 +378,47 @@ std::vector<RationalPoint3> with_triangle(const Polygon3& poly, const std::array
   return pts;
 }
 
+// Strictly inside the triangle (relative interior), exact.
+bool in_triangle_relative_interior(const RationalPoint3& q, const std::array<RationalPoint3, 3>& t) {
+  if (orient3d(t[0], t[1], t[2], q) != Sign::Zero) return false;
+  const Vec3<Exact> n = cross(t[1] - t[0], t[2] - t[0]);
+  for (int i = 0; i < 3; ++i) {
+    const auto& a = t[i];
+    const auto& b = t[(i + 1) % 3];
+    if (CGAL::sign(dot(cross(b - a, q - a), n)) != CGAL::POSITIVE) return false;
+  }
+  return true;
+}
+
+// Closed convex polygon membership, exact.
+bool in_closed_polygon(const RationalPoint3& p, const Polygon3& poly) {
+  const Plane3 pl = plane_of(poly);
+  if (CGAL::sign(pl.value(p)) != CGAL::ZERO) return false;
+  for (std::size_t i = 0; i < poly.size(); ++i) {
+    const auto& a = poly[i];
+    const auto& b = poly[(i + 1) % poly.size()];
+    if (CGAL::sign(dot(cross(b - a, p - a), pl.normal)) == CGAL::NEGATIVE) return false;
+  }
+  return true;
+}
+
+RationalPoint3 nearest_doubles(const RationalPoint3& p) {
+  return {Exact(CGAL::to_double(p.x)), Exact(CGAL::to_double(p.y)), Exact(CGAL::to_double(p.z))};
+}
+
 }  // namespace
+
+std::optional<Witness> round_witness(const Scene& scene, const CandidateFinder& candidates,
+                                     const std::function<bool(const RationalPoint3&)>& on_source,
+                                     std::int64_t triangle_index, const Witness& w) {
+  const Witness r{nearest_doubles(w.p), nearest_doubles(w.q)};
+  if (r.p == w.p && r.q == w.q) return w;
+  const auto tri = triangle_points(scene, triangle_index);
+  if (!on_source(r.p) || !in_triangle_relative_interior(r.q, tri)) return std::nullopt;
+  const auto cands = candidates(enclosing_box({w.p, w.q, r.p, r.q}));
+  if (!segment_is_free(scene, cands, r.p, r.q, triangle_index)) return std::nullopt;
+  return r;
+}
 
 CandidateFinder brute_force_candidates(const Scene& scene) {
   return [&scene](const Box3& box) {
@@ -417,6 +492,10 @@ VisibilityResult visible_from_polygon(const Scene& scene, const CandidateFinder&
     if (auto w = query.run()) {
       result.visible = true;
       result.witness = w;
+      if (options.round_witness)
+        if (auto r = round_witness(scene, candidates, [&](const RationalPoint3& p) { return in_closed_polygon(p, source); },
+                                   triangle_index, *w))
+          result.witness = r;
       break;
     }
   }
@@ -495,6 +574,10 @@ VisibilityResult visible_from_box(const Scene& scene, const CandidateFinder& can
     if (auto w = witness_inside_cell(scene, cands, t_in, tri, cell, triangle_index, options.seed)) {
       result.visible = true;
       result.witness = w;
+      if (options.round_witness)
+        if (auto r = round_witness(scene, candidates, [&](const RationalPoint3& p) { return in_closed_box(p, cell); },
+                                   triangle_index, *w))
+          result.witness = r;
       result.stats.exact_evaluations = static_cast<std::int64_t>(exact_evaluations_total() - before);
       return result;
     }
@@ -524,6 +607,10 @@ VisibilityResult visible_from_box(const Scene& scene, const CandidateFinder& can
       if (face.visible) {
         result.visible = true;
         result.witness = face.witness;
+        if (options.round_witness)
+          if (auto r = round_witness(scene, candidates, [&](const RationalPoint3& p) { return in_closed_box(p, cell); },
+                                     triangle_index, *face.witness))
+            result.witness = r;
         break;
       }
     }

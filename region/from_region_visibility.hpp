@@ -29,6 +29,8 @@ CandidateFinder brute_force_candidates(const Scene& scene);
 struct VisibilityOptions {
   int samples = 48;             // random segments cast per stabbing pair before the exact query
   std::uint64_t seed = 1;       // for sampling (results do not depend on it, only the witness may)
+  bool round_witness = true;    // report the witness with double coordinates when that rounding stays a
+                                // valid witness (re-checked exactly), else with exact rationals
 };
 
 struct VisibilityStats {
@@ -66,6 +68,12 @@ VisibilityResult visible_from_polygon(const Scene& scene, const CandidateFinder&
 // Visibility from an axis-aligned box (view cell) with lo < hi in every coordinate.
 VisibilityResult visible_from_box(const Scene& scene, const CandidateFinder& candidates, const Box3& cell,
                                   std::int64_t triangle_index, const VisibilityOptions& options = {});
+
+// The witness rounded to the nearest doubles, if that is still a valid witness (exact re-check: p on the
+// source per `on_source`, q in relint T, open segment free); std::nullopt otherwise.
+std::optional<Witness> round_witness(const Scene& scene, const CandidateFinder& candidates,
+                                     const std::function<bool(const RationalPoint3&)>& on_source,
+                                     std::int64_t triangle_index, const Witness& w);
 
 // Throws std::invalid_argument with a clear message unless `poly` is a convex planar polygon of positive
 // area with >= 3 vertices and no repeated consecutive vertices.

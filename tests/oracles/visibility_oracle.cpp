@@ -30,6 +30,25 @@ QVec random_in_box(const QVec& lo, const QVec& hi, std::mt19937_64& rng) {
   return {coord(lo.x, hi.x), coord(lo.y, hi.y), coord(lo.z, hi.z)};
 }
 
+// Exact bounding-box rejection: false when the segment's box and the triangle's box are disjoint.
+bool boxes_overlap(const QVec& p, const QVec& q, const Triangle& t) {
+  auto axis = [](const QVec& v, int k) -> const mpq_class& { return k == 0 ? v.x : (k == 1 ? v.y : v.z); };
+  for (int k = 0; k < 3; ++k) {
+    const mpq_class& a = axis(p, k);
+    const mpq_class& b = axis(q, k);
+    const mpq_class& lo_s = a < b ? a : b;
+    const mpq_class& hi_s = a < b ? b : a;
+    const mpq_class* lo_t = &axis(t[0], k);
+    const mpq_class* hi_t = lo_t;
+    for (int c = 1; c < 3; ++c) {
+      if (axis(t[c], k) < *lo_t) lo_t = &axis(t[c], k);
+      if (axis(t[c], k) > *hi_t) hi_t = &axis(t[c], k);
+    }
+    if (hi_s < *lo_t || *hi_t < lo_s) return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 bool witness_is_valid(const std::vector<Triangle>& scene, std::size_t target, const Source& source, const QVec& p,
@@ -47,7 +66,7 @@ bool witness_is_valid(const std::vector<Triangle>& scene, std::size_t target, co
   if (!oracle_point_in_triangle_relative_interior(q, t[0], t[1], t[2]))
     return fail("q is not in the relative interior of the target");
   for (std::size_t i = 0; i < scene.size(); ++i) {
-    if (i == target) continue;
+    if (i == target || !boxes_overlap(p, q, scene[i])) continue;
     if (oracle_open_segment_meets_closed_triangle(p, q, scene[i][0], scene[i][1], scene[i][2]))
       return fail("the segment meets triangle " + std::to_string(i));
   }
@@ -67,6 +86,7 @@ std::optional<std::pair<QVec, QVec>> find_robust_free_segment(const std::vector<
     for (std::size_t i = 0; i < scene.size() && ok; ++i) {
       if (i == target) continue;
       const auto& o = scene[i];
+      if (!boxes_overlap(p, q, o)) continue;
       if (oracle_open_segment_meets_closed_triangle(p, q, o[0], o[1], o[2]) ||
           oracle_point_in_closed_triangle(p, o[0], o[1], o[2]) || oracle_point_in_closed_triangle(q, o[0], o[1], o[2]))
         ok = false;

@@ -1,0 +1,69 @@
+#include "io/write_visibility_vtp.hpp"
+
+#include "io/atomic_file.hpp"
+
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkIdTypeArray.h>
+#include <vtkIntArray.h>
+#include <vtkNew.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkXMLPolyDataWriter.h>
+
+namespace exactvis {
+
+void write_visibility_vtp(const std::string& path, const Scene& scene, const std::vector<int>& state,
+                          const std::vector<WitnessSegment>& witnesses) {
+  if (state.size() != scene.triangles.size())
+    throw OutputError(path + ": visibility state does not match the scene's triangles");
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  for (const auto& p : scene.vertices) points->InsertNextPoint(p.x, p.y, p.z);
+  vtkNew<vtkCellArray> polys, lines;
+  // vtkPolyData orders cell data as lines before polygons.
+  vtkNew<vtkIdTypeArray> id;
+  vtkNew<vtkIdTypeArray> object;
+  vtkNew<vtkIntArray> visible, kind;
+  id->SetName("id");
+  object->SetName("object");
+  visible->SetName("visible");
+  kind->SetName("kind");
+  for (const auto& w : witnesses) {
+    const vtkIdType ids[2] = {points->InsertNextPoint(w.p.x, w.p.y, w.p.z), points->InsertNextPoint(w.q.x, w.q.y, w.q.z)};
+    lines->InsertNextCell(2, ids);
+    id->InsertNextValue(w.triangle_id);
+    object->InsertNextValue(-1);
+    visible->InsertNextValue(1);
+    kind->InsertNextValue(1);
+  }
+  for (std::size_t i = 0; i < scene.triangles.size(); ++i) {
+    const auto& t = scene.triangles[i];
+    const vtkIdType ids[3] = {t.v[0], t.v[1], t.v[2]};
+    polys->InsertNextCell(3, ids);
+    id->InsertNextValue(t.id);
+    object->InsertNextValue(t.object);
+    visible->InsertNextValue(state[i]);
+    kind->InsertNextValue(0);
+  }
+  vtkNew<vtkPolyData> poly;
+  poly->SetPoints(points);
+  poly->SetLines(lines);
+  poly->SetPolys(polys);
+  poly->GetCellData()->AddArray(id);
+  poly->GetCellData()->AddArray(object);
+  poly->GetCellData()->AddArray(visible);
+  poly->GetCellData()->AddArray(kind);
+  poly->GetCellData()->SetActiveScalars("visible");
+  write_atomically(path, [&](const std::string& temp) {
+    vtkNew<vtkXMLPolyDataWriter> writer;
+    writer->SetFileName(temp.c_str());
+    writer->SetInputData(poly);
+    writer->SetDataModeToAppended();
+    writer->EncodeAppendedDataOff();
+    writer->SetCompressorTypeToZLib();
+    return writer->Write() == 1 && writer->GetErrorCode() == 0;
+  });
+}
+
+}  // namespace exactvis
