@@ -1,5 +1,6 @@
 #include "events/ev_events.hpp"
 
+#include "events/ev_parameter.hpp"
 #include "events/occluder_index.hpp"
 #include "events/progress_bar.hpp"
 #include "events/tangency.hpp"
@@ -15,64 +16,81 @@ namespace {
 
 // A closed parameter interval where lines are invalid, with the causes at its ends.
 struct Invalid {
-  Exact lo, hi;
+  EvParameter lo, hi;
   EventEnd lo_end, hi_end;
 };
 
 bool has_vertex(const SceneTriangle& t, int v) { return t.v[0] == v || t.v[1] == v || t.v[2] == v; }
 
-// Parameters t in (0, 1) where the vertex rule may change, each with the fan triangle causing it.
+// Parameters t in (0, 1) where the vertex rule may change, each with the fan triangle causing it, sorted.
 // The rule's inputs are signs of functions linear in t: det(d(t), w1, w2) per fan triangle (the line enters
-// a face plane) and, for link vertices W in the wedge plane, the t where the line passes through W.
-std::map<Exact, int> vertex_rule_breakpoints(const Scene& scene, const VertexFan& fan, const Vec3<Exact>& av,
-                                             const Vec3<Exact>& bv) {
-  std::map<Exact, int> out;
-  const Vec3<Exact> V = to_rational(scene.vertices[fan.vertex]);
-  const Vec3<Exact> ba = bv - av;
-  auto add = [&](const Exact& t, int ti) {
-    if (CGAL::sign(t) > 0 && t < 1) out.emplace(t, ti);
+// a face plane) and, when the wedge lies in a face plane, the t where the line passes through W1 or W2.
+std::vector<std::pair<EvParameter, int>> vertex_rule_breakpoints(const Scene& scene, const VertexFan& fan,
+                                                                 const Vec3<Ring>& av, const Vec3<Ring>& bv) {
+  std::vector<std::pair<EvParameter, int>> out;
+  auto ring = [](const Point3& q) { return Vec3<Ring>(Ring(q.x), Ring(q.y), Ring(q.z)); };
+  const Vec3<Ring> V = ring(scene.vertices[fan.vertex]);
+  const Vec3<Ring> ba = bv - av;
+  const EvParameter zero = EvParameter::integer(0), one = EvParameter::integer(1);
+  auto add = [&](const EvParameter& t, int ti) {
+    if (t > zero && t < one) out.emplace_back(t, ti);
   };
   for (int ti : fan.triangles) {
     const auto& t = scene.triangles[ti];
     int k = 0;
     while (t.v[k] != fan.vertex) ++k;
-    const Vec3<Exact> w1 = to_rational(scene.vertices[t.v[(k + 1) % 3]]) - V;
-    const Vec3<Exact> w2 = to_rational(scene.vertices[t.v[(k + 2) % 3]]) - V;
-    const Vec3<Exact> n = cross(w1, w2);
-    const Exact c0 = dot(av, n), c1 = dot(ba, n);
+    const Vec3<Ring> w1 = ring(scene.vertices[t.v[(k + 1) % 3]]) - V;
+    const Vec3<Ring> w2 = ring(scene.vertices[t.v[(k + 2) % 3]]) - V;
+    const Vec3<Ring> n = cross(w1, w2);
+    const Ring c0 = dot(av, n), c1 = dot(ba, n);
     if (CGAL::sign(c1) != 0) {
-      add(-c0 / c1, ti);
+      add(EvParameter(-c0, c1), ti);
     } else if (CGAL::sign(c0) == 0) {
       // The wedge lies in this face's plane: the rule changes where the line passes through W1 or W2.
       for (const auto& w : {w1, w2}) {
-        const Vec3<Exact> c = cross(av, w), e = cross(ba, w);
+        const Vec3<Ring> c = cross(av, w), e = cross(ba, w);
         for (int j = 0; j < 3; ++j) {
           if (CGAL::sign(e[j]) == 0) continue;
-          const Exact s = -c[j] / e[j];
-          const Vec3<Exact> dd = av + s * ba;
-          if (cross(dd, w) == Vec3<Exact>()) add(s, ti);
+          const EvParameter s(-c[j], e[j]);
+          const Vec3<Ring> dd = s.den * av + s.num * ba;
+          const Vec3<Ring> z = cross(dd, w);
+          if (CGAL::sign(z.x) == 0 && CGAL::sign(z.y) == 0 && CGAL::sign(z.z) == 0) add(s, ti);
           break;
         }
       }
     }
   }
+  std::sort(out.begin(), out.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+  out.erase(std::unique(out.begin(), out.end(), [](const auto& x, const auto& y) { return x.first == y.first; }),
+            out.end());
   return out;
+}
+
+// True iff the union of the closed intervals is [0, 1].
+bool covers_unit_interval(std::vector<Invalid> invalid) {
+  std::sort(invalid.begin(), invalid.end(), [](const Invalid& x, const Invalid& y) { return x.lo < y.lo; });
+  EvParameter pos = EvParameter::integer(0);
+  for (const auto& iv : invalid) {
+    if (iv.lo > pos) return false;
+    if (iv.hi > pos) pos = iv.hi;
+  }
+  return pos >= EvParameter::integer(1);
 }
 
 // Sweeps [0, 1] minus the union of closed invalid intervals; keeps components of positive length.
 std::vector<EvInterval> free_components(std::vector<Invalid> invalid) {
   std::sort(invalid.begin(), invalid.end(), [](const Invalid& x, const Invalid& y) { return x.lo < y.lo; });
   std::vector<EvInterval> out;
-  Exact pos(0);
+  EvParameter pos = EvParameter::integer(0);
   EventEnd pos_end;  // EdgeEndpoint
   for (const auto& iv : invalid) {
-    if (iv.lo > pos) out.push_back({pos, iv.lo, pos_end, iv.lo_end});
+    if (iv.lo > pos) out.push_back({pos.exact(), iv.lo.exact(), pos_end, iv.lo_end});
     if (iv.hi >= pos) {
       pos = iv.hi;
       pos_end = iv.hi_end;
     }
   }
-  if (pos < 1) out.push_back({pos, Exact(1), pos_end, EventEnd{}});
+  if (pos < EvParameter::integer(1)) out.push_back({pos.exact(), Exact(1), pos_end, EventEnd{}});
   return out;
 }
 
@@ -97,18 +115,24 @@ std::optional<EvEvent> ev_event(const Scene& scene, const SceneAdjacency& adj, c
   if (!edge_tangent_in_plane(scene, e, pv)) return std::nullopt;
   if (stats) ++stats->tangent_pairs;
 
-  const Vec3<Exact> V = to_rational(pv);
-  const Vec3<Exact> av = to_rational(pa) - V, bv = to_rational(pb) - V;
-  const Vec3<Exact> normal = cross(av, bv);
-  auto dir = [&](const Exact& t) { return av + t * (bv - av); };
+  auto ring = [](const Point3& q) { return Vec3<Ring>(Ring(q.x), Ring(q.y), Ring(q.z)); };
+  const Vec3<Ring> V = ring(pv);
+  const Vec3<Ring> av = ring(pa) - V, bv = ring(pb) - V;
+  const Vec3<Ring> ba = bv - av;
+  auto to_exact_vec = [](const Vec3<Ring>& x) {
+    return Vec3<Exact>(Exact(static_cast<CGAL::Gmpq>(x.x)), Exact(static_cast<CGAL::Gmpq>(x.y)),
+                       Exact(static_cast<CGAL::Gmpq>(x.z)));
+  };
+  const Vec3<Exact> normal = to_exact_vec(cross(av, bv));
+  // Direction of L(t), up to the positive factor den.
+  auto dir = [&](const EvParameter& t) { return to_exact_vec(t.den * av + t.num * ba); };
 
   std::vector<Invalid> invalid;
   // Vertex rule: constant between breakpoints; test each open piece at its midpoint and each breakpoint.
   {
-    const auto breaks = vertex_rule_breakpoints(scene, fan, av, bv);
-    std::vector<std::pair<Exact, int>> pts{{Exact(0), -1}};
-    for (const auto& [t, ti] : breaks) pts.emplace_back(t, ti);
-    pts.emplace_back(Exact(1), -1);
+    std::vector<std::pair<EvParameter, int>> pts{{EvParameter::integer(0), -1}};
+    for (auto& bp : vertex_rule_breakpoints(scene, fan, av, bv)) pts.push_back(std::move(bp));
+    pts.emplace_back(EvParameter::integer(1), -1);
     auto end_at = [&](int ti) {
       EventEnd x;
       x.cause = ti >= 0 ? EventEnd::Cause::Tangency : EventEnd::Cause::EdgeEndpoint;
@@ -116,20 +140,28 @@ std::optional<EvEvent> ev_event(const Scene& scene, const SceneAdjacency& adj, c
       return x;
     };
     for (std::size_t i = 0; i + 1 < pts.size(); ++i) {
-      const Exact mid = (pts[i].first + pts[i + 1].first) / 2;
-      if (!line_tangent_at_vertex(scene, fan, dir(mid), normal).tangent)
+      if (!line_tangent_at_vertex(scene, fan, dir(midpoint(pts[i].first, pts[i + 1].first)), normal).tangent)
         invalid.push_back({pts[i].first, pts[i + 1].first, end_at(pts[i].second), end_at(pts[i + 1].second)});
       if (i + 1 < pts.size() - 1) {
         const auto& [t, ti] = pts[i + 1];
-        if (!line_tangent_at_vertex(scene, fan, dir(t), normal).tangent)
-          invalid.push_back({t, t, end_at(ti), end_at(ti)});
+        if (!line_tangent_at_vertex(scene, fan, dir(t), normal).tangent) invalid.push_back({t, t, end_at(ti), end_at(ti)});
       }
     }
   }
-  // Occluders: closed triangles not incident to V and not having E as an edge.
+  // Occluders: closed triangles not incident to V and not having E as an edge. Large ones first (a float
+  // heuristic for order only), and stop as soon as the invalid set covers [0, 1].
+  std::vector<std::pair<double, int>> cand;
   for (int ti : index.triangles_meeting(pv, pa, pb)) {
     const auto& t = scene.triangles[ti];
     if (has_vertex(t, v) || (has_vertex(t, e.v[0]) && has_vertex(t, e.v[1]))) continue;
+    const Point3 &p0 = scene.corner(t, 0), &p1 = scene.corner(t, 1), &p2 = scene.corner(t, 2);
+    const Point3 c = cross(p1 - p0, p2 - p0);
+    cand.emplace_back(-dot(c, c), ti);
+  }
+  std::sort(cand.begin(), cand.end());
+  int since_check = 0;
+  for (const auto& [key, ti] : cand) {
+    const auto& t = scene.triangles[ti];
     if (stats) ++stats->occluder_tests;
     const auto b = wedge_blocked_interval(pv, pa, pb, {scene.corner(t, 0), scene.corner(t, 1), scene.corner(t, 2)},
                                           {t.v[0], t.v[1], t.v[2]});
@@ -137,6 +169,10 @@ std::optional<EvEvent> ev_event(const Scene& scene, const SceneAdjacency& adj, c
     EventEnd lo{EventEnd::Cause::Occluder, t.id, b->lo_feature};
     EventEnd hi{EventEnd::Cause::Occluder, t.id, b->hi_feature};
     invalid.push_back({b->lo, b->hi, lo, hi});
+    if (++since_check >= 4) {
+      since_check = 0;
+      if (covers_unit_interval(invalid)) return std::nullopt;
+    }
   }
   EvEvent ev;
   ev.vertex = v;

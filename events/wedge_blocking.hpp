@@ -5,6 +5,7 @@
 // t in [0, 1]. A closed occluder triangle T blocks parameter t iff T meets the open segment (V, P(t)).
 // The blocked set is an interval of t; this returns its closure (exact rational ends) and, for each end,
 // which feature of T defines it.
+#include "events/ev_parameter.hpp"
 #include "kernel/number_types.hpp"
 #include "kernel/vec3.hpp"
 
@@ -26,7 +27,7 @@ struct OccluderFeature {
 };
 
 struct BlockedInterval {
-  Exact lo, hi;                 // closure of the blocked parameter set, 0 <= lo <= hi <= 1
+  EvParameter lo, hi;           // closure of the blocked parameter set, 0 <= lo <= hi <= 1 (exact)
   OccluderFeature lo_feature, hi_feature;
 };
 

@@ -1,0 +1,121 @@
+// Benchmark of EV event enumeration: time vs scene size (full enumeration and light-restricted) and vs
+// output size. Prints a table (docs/performance.md "bench_events" has the figures and the command).
+//
+// Usage: bench_events [--kinds town,forest,random,room] [--full 100,300,1000,3000] [--light 1000,10000,100000]
+//                     [--seed 1]
+#include "events/ev_events.hpp"
+#include "events/light_source.hpp"
+#include "events/scene_adjacency.hpp"
+#include "kernel/scene_generators.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <sstream>
+#include <string>
+#include <vector>
+
+using namespace exactvis;
+
+namespace {
+
+std::vector<std::string> split(const std::string& s) {
+  std::vector<std::string> out;
+  std::stringstream ss(s);
+  std::string item;
+  while (std::getline(ss, item, ',')) if (!item.empty()) out.push_back(item);
+  return out;
+}
+
+struct Row {
+  double seconds = 0;
+  std::size_t events = 0, intervals = 0;
+  EvStats stats;
+};
+
+Row run(const Scene& scene, const EvOptions& opt) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const EvResult r = enumerate_ev_events(scene, opt);
+  Row row;
+  row.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  row.events = r.events.size();
+  for (const auto& e : r.events) row.intervals += e.intervals.size();
+  row.stats = r.stats;
+  return row;
+}
+
+// A square light of side 1/10 of the scene's diagonal extent, just above the scene's top, centred.
+std::string light_polygon(const Scene& s) {
+  const Box3 b = bounding_box(s);
+  const double cx = std::round((b.lo.x + b.hi.x) / 2), cy = std::round((b.lo.y + b.hi.y) / 2);
+  const double h = std::max(1.0, std::round((b.hi.x - b.lo.x) / 20));
+  const double z = b.hi.z + h;
+  char buf[256];
+  std::snprintf(buf, sizeof buf, "%.17g,%.17g,%.17g;%.17g,%.17g,%.17g;%.17g,%.17g,%.17g;%.17g,%.17g,%.17g", cx - h,
+                cy - h, z, cx + h, cy - h, z, cx + h, cy + h, z, cx - h, cy + h, z);
+  return buf;
+}
+
+void header(const char* title) {
+  std::printf("\n%s\n%-7s %8s %8s %8s %11s %11s %12s %8s %9s %9s %7s\n", title, "kind", "tris", "verts", "edges",
+              "pairs", "tangent", "occl.tests", "events", "intervals", "seconds", "growth");
+}
+
+void print(const std::string& kind, const Scene& s, const Row& r, double growth) {
+  const std::size_t edges = build_scene_adjacency(s).edges.size();
+  std::printf("%-7s %8zu %8zu %8zu %11llu %11llu %12llu %8zu %9zu %9.3f ", kind.c_str(), s.triangles.size(),
+              s.vertices.size(), edges, (unsigned long long)r.stats.pairs, (unsigned long long)r.stats.tangent_pairs,
+              (unsigned long long)r.stats.occluder_tests, r.events, r.intervals, r.seconds);
+  if (std::isnan(growth)) std::printf("%7s\n", "-");
+  else std::printf("%7.2f\n", growth);
+  std::fflush(stdout);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::vector<std::string> kinds{"town", "forest", "random"};
+  std::vector<std::string> full{"100", "300", "1000", "3000"};
+  std::vector<std::string> light{"1000", "10000", "100000"};
+  std::uint64_t seed = 1;
+  for (int i = 1; i + 1 < argc; i += 2) {
+    const std::string a = argv[i], v = argv[i + 1];
+    if (a == "--kinds") kinds = split(v);
+    else if (a == "--full") full = split(v);
+    else if (a == "--light") light = split(v);
+    else if (a == "--seed") seed = std::stoull(v);
+    else {
+      std::fprintf(stderr, "bench_events: unknown option %s\n", a.c_str());
+      return 1;
+    }
+  }
+  std::printf("EV events, both cores (oneTBB); growth = log(time ratio) / log(triangle ratio) vs previous row\n");
+  header("Full enumeration (all vertex-edge pairs)");
+  for (const auto& kind : kinds) {
+    double prev_t = NAN, prev_n = NAN;
+    for (const auto& n : full) {
+      const Scene s = generate_scene(kind, std::stoll(n), seed);
+      const Row r = run(s, {});
+      const double nn = static_cast<double>(s.triangles.size());
+      print(kind, s, r, std::log(r.seconds / prev_t) / std::log(nn / prev_n));
+      prev_t = r.seconds;
+      prev_n = nn;
+    }
+  }
+  header("Light-restricted (a square light above the scene's centre, appended to the scene)");
+  for (const auto& kind : kinds) {
+    double prev_t = NAN, prev_n = NAN;
+    for (const auto& n : light) {
+      Scene s = generate_scene(kind, std::stoll(n), seed);
+      EvOptions opt;
+      opt.light_triangles = select_light(s, light_polygon(s)).triangles;
+      const Row r = run(s, opt);
+      const double nn = static_cast<double>(s.triangles.size());
+      print(kind, s, r, std::log(r.seconds / prev_t) / std::log(nn / prev_n));
+      prev_t = r.seconds;
+      prev_n = nn;
+    }
+  }
+  return 0;
+}
