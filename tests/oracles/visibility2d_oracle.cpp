@@ -242,14 +242,42 @@ std::vector<std::array<Pt, 2>> brute_force_visible_edges(const std::vector<Polyg
   return seen;
 }
 
-std::vector<Polygon> random_grid_scene(std::uint64_t seed, int cells) {
+std::vector<std::array<int, 2>> free_segment_end_pairs(const std::vector<Polygon>& scene, const Pt& p, const Pt& q) {
+  const Flat f = flatten(scene);
+  const Pt d{q.x - p.x, q.y - p.y};
+  std::vector<std::pair<mpq_class, int>> hits;  // parameter along the line, object
+  for (std::size_t v = 0; v < f.p.size(); ++v) {
+    const Pt &a = f.p[v], &b = f.p[f.next[v]];
+    const mpq_class ex = b.x - a.x, ey = b.y - a.y, den = d.x * ey - d.y * ex;
+    if (den == 0) continue;
+    const mpq_class ax = a.x - p.x, ay = a.y - p.y;
+    const mpq_class s = (ax * d.y - ay * d.x) / den;
+    if (s > 0 && s < 1) hits.emplace_back((ax * ey - ay * ex) / den, f.object[v]);
+  }
+  std::sort(hits.begin(), hits.end());
+  std::vector<std::array<int, 2>> out;
+  // pieces: (-inf, h0), (h0, h1), ..., (h_last, +inf); free ones alternate with object interiors
+  for (std::size_t i = 0; i <= hits.size(); ++i) {
+    mpq_class t;
+    if (hits.empty()) t = 0;
+    else if (i == 0) t = hits[0].first - 1;
+    else if (i == hits.size()) t = hits.back().first + 1;
+    else t = (hits[i - 1].first + hits[i].first) / 2;
+    if (inside_flat(f, {p.x + t * d.x, p.y + t * d.y})) continue;
+    const int lo = i == 0 ? -1 : hits[i - 1].second, hi = i == hits.size() ? -1 : hits[i].second;
+    out.push_back({std::min(lo, hi), std::max(lo, hi)});
+  }
+  return out;
+}
+
+std::vector<Polygon> random_grid_scene(std::uint64_t seed, int cells, bool convex_only) {
   std::mt19937_64 rng(seed);
   auto uni = [&](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); };
   std::vector<Polygon> scene;
   for (int i = 0; i < cells; ++i)
     for (int j = 0; j < cells; ++j) {
       const double ox = 10.0 * i, oy = 10.0 * j;
-      const int type = uni(0, 9);
+      const int type = convex_only ? uni(0, 5) : uni(0, 9);
       if (type <= 1) continue;  // empty cell
       if (type <= 5) {          // convex: hull of random grid points in [1,9]^2
         std::vector<std::array<double, 2>> pts;

@@ -44,9 +44,13 @@ bool on_boundary(const std::vector<Polygon>& scene, const Pt& p);
 // p must be in free space. O(n^2 log n) with exact rationals.
 std::vector<std::array<Pt, 2>> brute_force_visible_edges(const std::vector<Polygon>& scene, const Pt& p);
 
+// The maximal free segments on the line through p and q (which must meet no vertex): for each, the sorted
+// pair of objects at its ends (-1 for infinity).
+std::vector<std::array<int, 2>> free_segment_end_pairs(const std::vector<Polygon>& scene, const Pt& p, const Pt& q);
+
 // Random scene of disjoint polygons on a grid of cells x cells (cell size 10, integer coordinates): convex
 // polygons, star-shaped non-convex polygons, and rings with holes and islands. May be invalid (a star may
-// self-intersect); callers validate and skip.
-std::vector<Polygon> random_grid_scene(std::uint64_t seed, int cells);
+// self-intersect); callers validate and skip. `convex_only`: convex polygons only.
+std::vector<Polygon> random_grid_scene(std::uint64_t seed, int cells, bool convex_only = false);
 
 }  // namespace oracle2d

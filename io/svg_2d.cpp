@@ -1,0 +1,112 @@
+#include "io/svg_2d.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+namespace exactvis {
+namespace {
+
+double unit(const SvgDocument2D& d) { return std::max(d.hi_x - d.lo_x, d.hi_y - d.lo_y) / 800.0; }
+
+std::string num(double v) {
+  std::ostringstream s;
+  s.precision(10);
+  s << v;
+  return s.str();
+}
+
+}  // namespace
+
+SvgDocument2D svg_document(double lo_x, double lo_y, double hi_x, double hi_y) {
+  const double m = 0.02 * std::max({hi_x - lo_x, hi_y - lo_y, 1e-9});
+  SvgDocument2D d;
+  d.lo_x = lo_x - m;
+  d.lo_y = lo_y - m;
+  d.hi_x = hi_x + m;
+  d.hi_y = hi_y + m;
+  return d;
+}
+
+SvgDocument2D svg_document(const Scene2D& s) {
+  if (s.points.empty()) return svg_document(0, 0, 1, 1);
+  double lo_x = s.points[0].ax, hi_x = lo_x, lo_y = s.points[0].ay, hi_y = lo_y;
+  for (const Point2& p : s.points) {
+    lo_x = std::min(lo_x, p.ax), hi_x = std::max(hi_x, p.ax);
+    lo_y = std::min(lo_y, p.ay), hi_y = std::max(hi_y, p.ay);
+  }
+  return svg_document(lo_x, lo_y, hi_x, hi_y);
+}
+
+void svg_rings(SvgDocument2D& doc, const std::vector<std::vector<std::array<double, 2>>>& rings,
+               const std::string& fill, const std::string& stroke, double fill_opacity) {
+  std::string path;
+  for (const auto& r : rings) {
+    for (std::size_t i = 0; i < r.size(); ++i) path += (i ? "L" : "M") + num(r[i][0]) + "," + num(r[i][1]) + " ";
+    if (!r.empty()) path += "Z ";
+  }
+  doc.items.push_back("<path d=\"" + path + "\" fill=\"" + fill + "\" fill-opacity=\"" + num(fill_opacity) +
+                      "\" fill-rule=\"evenodd\" stroke=\"" + stroke + "\" stroke-width=\"" + num(unit(doc)) +
+                      "\"/>");
+}
+
+void svg_segment(SvgDocument2D& doc, std::array<double, 2> a, std::array<double, 2> b, const std::string& stroke,
+                 double width_ratio, bool dashed) {
+  doc.items.push_back("<line x1=\"" + num(a[0]) + "\" y1=\"" + num(a[1]) + "\" x2=\"" + num(b[0]) + "\" y2=\"" +
+                      num(b[1]) + "\" stroke=\"" + stroke + "\" stroke-width=\"" + num(unit(doc) * width_ratio) +
+                      "\"" + (dashed ? " stroke-dasharray=\"" + num(4 * unit(doc)) + "\"" : "") + "/>");
+}
+
+void svg_point(SvgDocument2D& doc, std::array<double, 2> p, const std::string& fill) {
+  doc.items.push_back("<circle cx=\"" + num(p[0]) + "\" cy=\"" + num(p[1]) + "\" r=\"" + num(3 * unit(doc)) +
+                      "\" fill=\"" + fill + "\"/>");
+}
+
+void svg_scene(SvgDocument2D& doc, const Scene2D& s) {
+  for (int obj = 0; obj < s.num_objects; ++obj) {
+    std::vector<std::vector<std::array<double, 2>>> rings;
+    for (const Ring2D& r : s.rings) {
+      if (r.object != obj || static_cast<int>(&r - &s.rings[0]) == s.frame_ring) continue;
+      rings.emplace_back();
+      for (int i = 0; i < r.size; ++i) rings.back().push_back({s.points[r.first + i].ax, s.points[r.first + i].ay});
+    }
+    svg_rings(doc, rings, "#9a9a9a", "#303030");
+  }
+}
+
+void svg_write(const SvgDocument2D& d, const std::string& path) {
+  std::ofstream out(path);
+  if (!out) throw std::runtime_error(path + ": cannot write");
+  const double w = d.hi_x - d.lo_x, h = d.hi_y - d.lo_y;
+  const double px = 900, py = std::max(100.0, 900 * h / std::max(w, 1e-12));
+  out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << num(px) << "\" height=\"" << num(py)
+      << "\" viewBox=\"" << num(d.lo_x) << " " << num(-d.hi_y) << " " << num(w) << " " << num(h) << "\">\n";
+  out << "<rect x=\"" << num(d.lo_x) << "\" y=\"" << num(-d.hi_y) << "\" width=\"" << num(w) << "\" height=\""
+      << num(h) << "\" fill=\"white\"/>\n<g transform=\"scale(1,-1)\">\n";
+  for (const auto& item : d.items) out << item << "\n";
+  out << "</g>\n</svg>\n";
+  if (!out) throw std::runtime_error(path + ": cannot write");
+}
+
+std::string svg_colour(int i) {
+  const double h = std::fmod(0.13 + 0.618033988749895 * i, 1.0) * 6.0;
+  const double s = 0.55, v = 0.95;
+  const double c = v * s, x = c * (1 - std::fabs(std::fmod(h, 2.0) - 1)), m = v - c;
+  double r = 0, g = 0, b = 0;
+  switch (static_cast<int>(h)) {
+    case 0: r = c, g = x; break;
+    case 1: r = x, g = c; break;
+    case 2: g = c, b = x; break;
+    case 3: g = x, b = c; break;
+    case 4: r = x, b = c; break;
+    default: r = c, b = x; break;
+  }
+  char buf[8];
+  std::snprintf(buf, sizeof buf, "#%02x%02x%02x", int((r + m) * 255), int((g + m) * 255), int((b + m) * 255));
+  return buf;
+}
+
+}  // namespace exactvis
