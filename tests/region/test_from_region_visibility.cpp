@@ -75,27 +75,35 @@ Polygon3 polygon(std::initializer_list<Point3> pts) {
   return out;
 }
 
-// Check one answer against the oracle; returns the answer.
+// Check one answer against the oracle; returns the answer. The query runs twice: with random-segment early
+// acceptance and with none (samples = 0, so the exact CSG decides); both answers must agree.
 template <class Src>
 bool checked_visible(const Scene& scene, const Src& src, std::int64_t target, int refute_samples = 400) {
-  VisibilityResult r;
-  if constexpr (std::is_same_v<Src, Box3>) r = visible_from_box(scene, brute_force_candidates(scene), src, target);
-  else r = visible_from_polygon(scene, brute_force_candidates(scene), src, target);
   const auto os = oracle_scene(scene);
-  if (r.visible) {
-    EXPECT_TRUE(r.witness.has_value());
-    if (r.witness) {
-      std::string why;
-      EXPECT_TRUE(oracle::witness_is_valid(os, static_cast<std::size_t>(target), oracle_source(src),
-                                           qv(r.witness->p), qv(r.witness->q), &why))
-          << "triangle " << target << ": " << why;
+  bool answers[2];
+  for (int samples : {48, 0}) {
+    VisibilityOptions opt;
+    opt.samples = samples;
+    VisibilityResult r;
+    if constexpr (std::is_same_v<Src, Box3>) r = visible_from_box(scene, brute_force_candidates(scene), src, target, opt);
+    else r = visible_from_polygon(scene, brute_force_candidates(scene), src, target, opt);
+    answers[samples == 0] = r.visible;
+    if (r.visible) {
+      EXPECT_TRUE(r.witness.has_value());
+      if (r.witness) {
+        std::string why;
+        EXPECT_TRUE(oracle::witness_is_valid(os, static_cast<std::size_t>(target), oracle_source(src),
+                                             qv(r.witness->p), qv(r.witness->q), &why))
+            << "triangle " << target << ": " << why;
+      }
+    } else if (samples == 0) {
+      const auto refute = oracle::find_robust_free_segment(os, static_cast<std::size_t>(target), oracle_source(src),
+                                                           refute_samples, 1000 + static_cast<unsigned long>(target));
+      EXPECT_FALSE(refute.has_value()) << "triangle " << target << " reported hidden but a free segment exists";
     }
-  } else {
-    const auto refute = oracle::find_robust_free_segment(os, static_cast<std::size_t>(target), oracle_source(src),
-                                                         refute_samples, 1000 + static_cast<unsigned long>(target));
-    EXPECT_FALSE(refute.has_value()) << "triangle " << target << " reported hidden but a free segment exists";
   }
-  return r.visible;
+  EXPECT_EQ(answers[0], answers[1]) << "triangle " << target << ": sampling and exact CSG disagree";
+  return answers[1];
 }
 
 }  // namespace
@@ -168,6 +176,29 @@ TEST(FromRegionVisibility, OccludersSharingEdgesWithTheTarget) {
   for (std::int64_t t = 0; t < 6; ++t) {
     checked_visible(b.scene, above, t);
     checked_visible(b.scene, below, t);
+  }
+}
+
+TEST(FromRegionVisibility, ThreeOccluderEdgesOnOneRegulus) {
+  // Rulings of one regulus of the hyperboloid x^2 + y^2 - z^2 = 1: (cos t, sin t, 0) + s (-sin t, cos t, 1) for
+  // (cos t, sin t) = (1,0), (0,1), (-1,0), (0,-1). Each occluder is a thin triangle with one edge on a ruling and
+  // its third corner pushed outwards; the lines passing all rulings on the inner side form the free set, and
+  // lines near the rulings themselves (the conic case of section 5.3) are what the CSG must decide.
+  for (int outer : {1, 2}) {
+    SceneBuilder b;
+    const double cs[4][2] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};
+    for (int i = 0; i < 4; ++i) {
+      const double c = cs[i][0], s = cs[i][1];
+      const Point3 a{c + 3 * s, s - 3 * c, -3}, e{c - 3 * s, s + 3 * c, 3};
+      const Point3 out{c * (1 + outer), s * (1 + outer), 0};
+      b.triangle(a, e, out);
+    }
+    const auto small = b.triangle({-0.25, -0.25, 6}, {0.25, -0.25, 6}, {0, 0.25, 6});
+    const auto ring = b.triangle({1.5, -1.5, 6}, {3, -1.5, 6}, {3, 0, 6});
+    const Polygon3 src = polygon({{-0.3, -0.3, -6}, {0.3, -0.3, -6}, {0.3, 0.3, -6}, {-0.3, 0.3, -6}});
+    EXPECT_TRUE(checked_visible(b.scene, src, small));
+    checked_visible(b.scene, src, ring);
+    for (std::int64_t t = 0; t < 4; ++t) checked_visible(b.scene, src, t);
   }
 }
 

@@ -1,0 +1,156 @@
+// `exactvis visible` run as a user would: the JSON shape of the issue, exact witnesses re-checked by the
+// independent oracle after parsing them back from JSON, the .vtp output, and bad parameters.
+#include "oracles/visibility_oracle.hpp"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+#include <vtkCellData.h>
+#include <vtkDataArray.h>
+#include <vtkNew.h>
+#include <vtkPolyData.h>
+#include <vtkXMLPolyDataReader.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <sys/wait.h>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct CliRun {
+  int status;
+  std::string out, err;
+};
+
+std::string slurp(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+class VisibleCli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("exactvis_visible_cli_" + std::to_string(::getpid()));
+    fs::create_directories(dir_);
+    // Slit scene: target (face 1) behind a wall of two rectangles with a gap 1e-9 wide; a second target
+    // (face 2) behind the wall where there is no gap.
+    std::ofstream obj(path("slit.obj"));
+    obj.precision(17);
+    obj << "v 10 -1 -1\nv 10 1 -1\nv 10 0 1\n"                     // 1-3 target (id 0)
+        << "v 10 5 -1\nv 10 7 -1\nv 10 6 1\n"                      // 4-6 hidden target (id 1)
+        << "v 5 -10 -10\nv 5 -5e-10 -10\nv 5 -5e-10 10\nv 5 -10 10\n"  // 7-10 left wall
+        << "v 5 5e-10 -10\nv 5 10 -10\nv 5 10 10\nv 5 5e-10 10\n"      // 11-14 right wall
+        << "f 1 2 3\nf 4 5 6\nf 7 8 9 10\nf 11 12 13 14\n";
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+  CliRun run(const std::string& args) const {
+    const std::string out = path("stdout"), err = path("stderr");
+    const int raw = std::system((std::string(EXACTVIS_BINARY) + " " + args + " >" + out + " 2>" + err).c_str());
+    return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(out), slurp(err)};
+  }
+  fs::path dir_;
+};
+
+mpq_class exact(const nlohmann::json& j) {
+  if (j.is_number()) return mpq_class(j.get<double>());
+  mpq_class q(j.get<std::string>());
+  q.canonicalize();
+  return q;
+}
+
+oracle::QVec point(const nlohmann::json& j) { return {exact(j[0]), exact(j[1]), exact(j[2])}; }
+
+std::vector<oracle::Triangle> slit_scene() {
+  // The OBJ above, fan-triangulated from each face's first vertex (ids 0, 1, 2-3, 4-5).
+  auto v = [](double x, double y, double z) { return oracle::qvec(x, y, z); };
+  return {{v(10, -1, -1), v(10, 1, -1), v(10, 0, 1)},
+          {v(10, 5, -1), v(10, 7, -1), v(10, 6, 1)},
+          {v(5, -10, -10), v(5, -5e-10, -10), v(5, -5e-10, 10)},
+          {v(5, -10, -10), v(5, -5e-10, 10), v(5, -10, 10)},
+          {v(5, 5e-10, -10), v(5, 10, -10), v(5, 10, 10)},
+          {v(5, 5e-10, -10), v(5, 10, 10), v(5, 5e-10, 10)}};
+}
+
+}  // namespace
+
+TEST_F(VisibleCli, PolygonSourceJsonShapeAndWitnesses) {
+  const CliRun r = run("visible " + path("slit.obj") + " --source-polygon \"0,-1,-1;0,1,-1;0,1,1;0,-1,1\" --triangles 0,1 --json -q");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  ASSERT_TRUE(j.contains("source"));
+  ASSERT_TRUE(j["source"].contains("polygon"));
+  ASSERT_TRUE(j.contains("stats"));
+  ASSERT_EQ(j["results"].size(), 2u);
+  EXPECT_EQ(j["results"][0]["triangle"], 0);
+  EXPECT_EQ(j["results"][0]["visible"], true);
+  EXPECT_EQ(j["results"][1]["triangle"], 1);
+  EXPECT_EQ(j["results"][1]["visible"], false);
+  EXPECT_FALSE(j["results"][1].contains("witness"));
+  oracle::Source src;
+  for (auto [x, y, z] : {std::array<double, 3>{0, -1, -1}, {0, 1, -1}, {0, 1, 1}, {0, -1, 1}})
+    src.polygon.push_back(oracle::qvec(x, y, z));
+  const auto& w = j["results"][0]["witness"];
+  ASSERT_EQ(w.size(), 2u);
+  std::string why;
+  EXPECT_TRUE(oracle::witness_is_valid(slit_scene(), 0, src, point(w[0]), point(w[1]), &why)) << why;
+}
+
+TEST_F(VisibleCli, CellSourceWritesJsonFileAndVtp) {
+  const std::string json = path("out.json"), vtp = path("out.vtp");
+  const CliRun r = run("visible " + path("slit.obj") + " --cell -2,-1,-1,-1,1,1 -o " + json + " --vtp " + vtp + " -q");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(slurp(json));
+  ASSERT_EQ(j["results"].size(), 6u);  // --triangles defaults to all
+  EXPECT_EQ(j["source"]["cell"].size(), 6u);
+  oracle::Source src;
+  src.is_box = true;
+  src.lo = oracle::qvec(-2, -1, -1);
+  src.hi = oracle::qvec(-1, 1, 1);
+  int visible = 0;
+  for (const auto& e : j["results"]) {
+    if (!e["visible"].get<bool>()) continue;
+    ++visible;
+    std::string why;
+    EXPECT_TRUE(oracle::witness_is_valid(slit_scene(), e["triangle"].get<std::size_t>(), src, point(e["witness"][0]),
+                                         point(e["witness"][1]), &why))
+        << why;
+  }
+  EXPECT_EQ(j["results"][0]["visible"], true);
+  EXPECT_EQ(j["results"][1]["visible"], false);
+  vtkNew<vtkXMLPolyDataReader> reader;
+  reader->SetFileName(vtp.c_str());
+  reader->Update();
+  vtkPolyData* poly = reader->GetOutput();
+  EXPECT_EQ(poly->GetNumberOfPolys(), 6);
+  EXPECT_EQ(poly->GetNumberOfLines(), visible);
+  ASSERT_NE(poly->GetCellData()->GetArray("visible"), nullptr);
+}
+
+TEST_F(VisibleCli, BadParametersFailCleanly) {
+  const std::string json = path("bad.json");
+  const std::string scene = path("slit.obj");
+  const std::vector<std::string> bad{
+      "visible " + scene + " --cell 0,0,0,1,1 -o " + json,                       // 5 numbers
+      "visible " + scene + " --cell 0,0,0,0,1,1 -o " + json,                     // empty extent
+      "visible " + scene + " --cell 0,0,nan,1,1,1 -o " + json,                   // not finite
+      "visible " + scene + " --cell 0,0,x,1,1,1 -o " + json,                     // not a number
+      "visible " + scene + " -o " + json,                                        // no source
+      "visible " + scene + " --source-polygon \"0,0,0;1,0,0;2,0,0\" -o " + json,  // collinear
+      "visible " + scene + " --source-polygon \"0,0,0;2,0,0;0,2,0;2,2,0\" -o " + json,  // self-crossing
+      "visible " + scene + " --source-polygon \"0,0,0;1,0,0;0,1,1;0,0,2\" -o " + json,  // not planar
+      "visible " + scene + " --cell -2,-1,-1,-1,1,1 --triangles 99 -o " + json,  // unknown id
+      "visible " + scene + " --cell -2,-1,-1,-1,1,1 --triangles 1,a -o " + json,  // malformed id
+      "visible " + path("missing.obj") + " --cell -2,-1,-1,-1,1,1 -o " + json,    // missing file
+  };
+  for (const auto& args : bad) {
+    const CliRun r = run(args);
+    EXPECT_NE(r.status, 0) << args;
+    EXPECT_FALSE(r.err.empty()) << args;
+    EXPECT_FALSE(fs::exists(json)) << args;
+  }
+}
