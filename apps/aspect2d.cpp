@@ -1,0 +1,125 @@
+// `exactvis aspect2d SCENE2D [--slice z=V] [--json] [--svg out.svg] [--vtp out.vtp] [--margin R]`: the
+// aspect graph of a planar scene: viewpoint regions of equal visible-edge sets (docs/cli.md).
+#include "apps/command_registry.hpp"
+#include "aspect/aspect_graph_2d.hpp"
+#include "io/scene2d_json.hpp"
+#include "io/svg_2d.hpp"
+#include "io/vtp_2d.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <iostream>
+#include <stdexcept>
+
+namespace {
+
+using namespace exactvis;
+
+struct Aspect2DOptions {
+  std::string scene, slice, svg, vtp;
+  bool json = false;
+  double margin = 0.25;
+};
+
+using ojson = nlohmann::ordered_json;  // keeps the documented key order ("counts" first)
+
+// An exact value: a JSON number when it is exactly a double, else the string "num/den".
+ojson exact_json(const Exact& x) {
+  double d = 0;
+  if (exact_double(x, &d)) return d;
+  return to_rational_string(x);
+}
+ojson point_json(const Point2& p) { return ojson::array({exact_json(p.x), exact_json(p.y)}); }
+
+void progress(double f) {
+  static int last = -1;
+  const int pct = static_cast<int>(f * 100);
+  if (pct == last) return;
+  last = pct;
+  std::cerr << "\raspect2d: " << pct << "%" << (pct == 100 ? "\n" : "") << std::flush;
+}
+
+std::vector<std::array<double, 2>> approx(const std::vector<Point2>& r) {
+  std::vector<std::array<double, 2>> out;
+  for (const Point2& p : r) out.push_back({p.ax, p.ay});
+  return out;
+}
+
+int run(const Aspect2DOptions& o) {
+  if (!(o.margin >= 0)) throw std::invalid_argument("--margin must be >= 0");
+  const Scene2D scene = load_scene2d(o.scene, o.slice);
+  const AspectGraph2D g = aspect_graph(scene, o.margin, scene.num_vertices() > 40 ? progress : nullptr);
+  if (o.json) {
+    ojson j;
+    j["counts"] = {{"regions", g.regions.size()}, {"adjacencies", g.adjacency.size()},
+                   {"arrangement_faces", g.arrangement_faces}, {"event_segments", g.event_segments}};
+    j["edges"] = ojson::array();
+    for (int e = 0; e < scene.num_vertices(); ++e)
+      j["edges"].push_back({{"id", e}, {"object", scene.object_of(e)}, {"a", point_json(scene.points[e])},
+                            {"b", point_json(scene.points[scene.next[e]])}});
+    j["regions"] = ojson::array();
+    for (const auto& r : g.regions) {
+      ojson faces = ojson::array();
+      for (int f : r.faces) {
+        ojson outer = ojson::array();
+        for (const Point2& p : g.faces[f].outer) outer.push_back(point_json(p));
+        ojson holes = ojson::array();
+        for (const auto& h : g.faces[f].holes) {
+          holes.push_back(ojson::array());
+          for (const Point2& p : h) holes.back().push_back(point_json(p));
+        }
+        faces.push_back({{"outer", outer}, {"holes", holes}, {"sample", point_json(g.faces[f].sample)}});
+      }
+      j["regions"].push_back({{"aspect", r.aspect}, {"faces", faces}});
+    }
+    j["adjacency"] = g.adjacency;
+    const Ring2D& fr = g.framed.rings[g.framed.frame_ring];
+    j["frame"] = {point_json(g.framed.points[fr.first]), point_json(g.framed.points[fr.first + 2])};
+    std::cout << j.dump(1) << "\n";
+  } else {
+    std::cout << "regions " << g.regions.size() << ", adjacencies " << g.adjacency.size() << ", arrangement faces "
+              << g.arrangement_faces << ", candidate event segments " << g.event_segments << "\n";
+  }
+  if (!o.svg.empty()) {
+    SvgDocument2D doc = svg_document(g.framed);
+    for (const auto& f : g.faces) {
+      if (f.region < 0) continue;
+      std::vector<std::vector<std::array<double, 2>>> rings{approx(f.outer)};
+      for (const auto& h : f.holes) rings.push_back(approx(h));
+      svg_rings(doc, rings, svg_colour(f.region), "none", 0.85);
+    }
+    for (const auto& b : g.boundaries) svg_segment(doc, {b[0].ax, b[0].ay}, {b[1].ax, b[1].ay}, "#404040", 0.4);
+    svg_scene(doc, g.framed);
+    svg_write(doc, o.svg);
+  }
+  if (!o.vtp.empty()) {
+    VtpCells2D cells;
+    for (const auto& f : g.faces) {
+      if (f.region < 0) continue;
+      cells.polygons.push_back({approx(f.outer)});
+      for (const auto& h : f.holes) cells.polygons.back().push_back(approx(h));
+      cells.polygon_values.push_back(f.region);
+    }
+    for (const auto& b : g.boundaries) {
+      cells.lines.push_back({{{b[0].ax, b[0].ay}, {b[1].ax, b[1].ay}}});
+      cells.line_values.push_back(-1);
+    }
+    write_vtp_2d(o.vtp, cells);
+  }
+  return 0;
+}
+
+const exactvis::app::CommandRegistration registration(
+    "aspect2d", 220, [](CLI::App& parent) -> std::function<int()> {
+      auto opts = std::make_shared<Aspect2DOptions>();
+      CLI::App* sub = parent.add_subcommand("aspect2d", "aspect graph of a 2D scene (viewpoint regions by visible edges)");
+      sub->add_option("scene", opts->scene, "2D scene JSON, or a 3D mesh with --slice")->required();
+      sub->add_option("--slice", opts->slice, "section of a 3D scene by a plane: x=V, y=V or z=V");
+      sub->add_flag("--json", opts->json, "print regions, aspects and adjacency as JSON on stdout");
+      sub->add_option("--svg", opts->svg, "write a picture: regions coloured by aspect");
+      sub->add_option("--vtp", opts->vtp, "write regions (cell value = region) as VTK PolyData");
+      sub->add_option("--margin", opts->margin, "viewpoint frame margin, relative to the scene size (default 0.25)");
+      return [opts] { return run(*opts); };
+    });
+
+}  // namespace

@@ -1,0 +1,55 @@
+#include "io/vtp_2d.hpp"
+
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkIntArray.h>
+#include <vtkNew.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkXMLPolyDataWriter.h>
+
+#include <stdexcept>
+
+namespace exactvis {
+
+void write_vtp_2d(const std::string& path, const VtpCells2D& c) {
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkCellArray> polys, lines;
+  vtkNew<vtkIntArray> value, kind;
+  value->SetName("value");
+  kind->SetName("kind");
+  // vtkPolyData numbers cells verts, lines, polys, strips: cell data must follow that order.
+  std::vector<int> line_value, line_kind, poly_value, poly_kind;
+  for (std::size_t i = 0; i < c.lines.size(); ++i) {
+    const vtkIdType a = points->InsertNextPoint(c.lines[i][0][0], c.lines[i][0][1], 0);
+    const vtkIdType b = points->InsertNextPoint(c.lines[i][1][0], c.lines[i][1][1], 0);
+    const vtkIdType ids[2] = {a, b};
+    lines->InsertNextCell(2, ids);
+    line_value.push_back(i < c.line_values.size() ? c.line_values[i] : 0);
+    line_kind.push_back(2);
+  }
+  for (std::size_t i = 0; i < c.polygons.size(); ++i)
+    for (std::size_t r = 0; r < c.polygons[i].size(); ++r) {
+      std::vector<vtkIdType> ids;
+      for (const auto& p : c.polygons[i][r]) ids.push_back(points->InsertNextPoint(p[0], p[1], 0));
+      polys->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
+      poly_value.push_back(r == 0 ? (i < c.polygon_values.size() ? c.polygon_values[i] : 0) : -1);
+      poly_kind.push_back(r == 0 ? 0 : 1);
+    }
+  for (int v : line_value) value->InsertNextValue(v);
+  for (int v : poly_value) value->InsertNextValue(v);
+  for (int v : line_kind) kind->InsertNextValue(v);
+  for (int v : poly_kind) kind->InsertNextValue(v);
+  vtkNew<vtkPolyData> pd;
+  pd->SetPoints(points);
+  pd->SetLines(lines);
+  pd->SetPolys(polys);
+  pd->GetCellData()->AddArray(value);
+  pd->GetCellData()->AddArray(kind);
+  vtkNew<vtkXMLPolyDataWriter> w;
+  w->SetFileName(path.c_str());
+  w->SetInputData(pd);
+  if (w->Write() != 1) throw std::runtime_error(path + ": cannot write");
+}
+
+}  // namespace exactvis
