@@ -3,8 +3,10 @@
 #include "events/ev_parameter.hpp"
 #include "events/occluder_index.hpp"
 #include "events/progress_bar.hpp"
+#include "events/ray_first_hit.hpp"
 #include "events/tangency.hpp"
 #include "kernel/predicates.hpp"
+#include "kernel/spatial_index.hpp"
 
 #include <tbb/parallel_for.h>
 
@@ -231,6 +233,31 @@ EvResult enumerate_ev_events(const Scene& scene, const EvOptions& options) {
     result.stats.pairs += per_vertex_stats[v].pairs;
     result.stats.tangent_pairs += per_vertex_stats[v].tangent_pairs;
     result.stats.occluder_tests += per_vertex_stats[v].occluder_tests;
+  }
+  if (options.segment_ends && !result.events.empty()) {
+    const SpatialIndex spatial(scene);
+    ProgressBar ends_bar("segment ends", result.events.size(), options.progress);
+    auto ends = [&](EvEvent& ev) {
+      const Vec3<Exact> V = to_rational(scene.vertices[ev.vertex]);
+      for (auto& iv : ev.intervals) {
+        iv.sample_t = (iv.t0 + iv.t1) / 2;
+        const Vec3<Exact> p = ev_edge_point(scene, ev.edge, iv.sample_t);
+        const Vec3<Exact> d = p - V;
+        const RayHit beyond = ray_first_hit(scene, spatial, p, d);
+        const RayHit behind = ray_first_hit(scene, spatial, V, -d);
+        iv.beyond_edge = beyond.triangle >= 0 ? scene.triangles[beyond.triangle].id : -1;
+        iv.behind_vertex = behind.triangle >= 0 ? scene.triangles[behind.triangle].id : -1;
+      }
+      ends_bar.advance();
+    };
+    if (options.parallel) {
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, result.events.size(), 16),
+                        [&](const tbb::blocked_range<std::size_t>& r) {
+                          for (std::size_t i = r.begin(); i != r.end(); ++i) ends(result.events[i]);
+                        });
+    } else {
+      for (auto& ev : result.events) ends(ev);
+    }
   }
   return result;
 }

@@ -37,6 +37,12 @@ struct EventEnd {
 struct EvInterval {
   Exact t0, t1;     // 0 <= t0 < t1 <= 1
   EventEnd end0, end1;
+  // Objects at both ends of the maximal free segment of the sample line L(sample_t), sample_t = (t0 + t1) / 2:
+  // stable ids of the first triangles hit beyond E (from P(t) away from V) and behind V (from V away from E),
+  // -1 when the line leaves the scene. Filled by enumerate_ev_events when EvOptions::segment_ends is set.
+  // They may change inside the interval (not split there; docs/theory.md section 6).
+  Exact sample_t;
+  std::int64_t beyond_edge = -1, behind_vertex = -1;
 };
 
 struct EvEvent {
@@ -57,6 +63,7 @@ struct EvOptions {
   std::vector<int> light_triangles;
   bool progress = false;   // progress bar on stderr
   bool parallel = true;    // oneTBB over vertices
+  bool segment_ends = true;  // find the objects at both ends of each interval's sample line
 };
 
 struct EvResult {

@@ -49,7 +49,16 @@ nlohmann::json ev_events_to_json(const Scene& scene, const EvResult& result) {
     e["vertex"] = ev.vertex;
     e["edge"] = {ev.edge[0], ev.edge[1]};
     nlohmann::json iv = nlohmann::json::array(), approx = nlohmann::json::array(), ends = nlohmann::json::array();
+    nlohmann::json objects = nlohmann::json::array();
+    auto object_of = [&](std::int64_t id) -> nlohmann::json {
+      if (id < 0) return nullptr;
+      const auto& t = scene.triangles[scene.index_of_id(id)];
+      return {{"triangle", id}, {"object", scene.objects[t.object].name}};
+    };
     for (const auto& i : ev.intervals) {
+      objects.push_back({{"sample_t", exact_to_json(i.sample_t)},
+                         {"beyond_edge", object_of(i.beyond_edge)},
+                         {"behind_vertex", object_of(i.behind_vertex)}});
       iv.push_back({exact_to_json(i.t0), exact_to_json(i.t1)});
       approx.push_back({CGAL::to_double(i.t0), CGAL::to_double(i.t1)});
       ends.push_back({event_end_to_json(scene, ev, i.t0, i.end0), event_end_to_json(scene, ev, i.t1, i.end1)});
@@ -57,6 +66,7 @@ nlohmann::json ev_events_to_json(const Scene& scene, const EvResult& result) {
     e["intervals"] = iv;
     e["intervals_approx"] = approx;
     e["ends"] = ends;
+    e["segment_ends"] = objects;
     events.push_back(std::move(e));
   }
   nlohmann::json j;

@@ -9,7 +9,8 @@ namespace exactvis {
 
 // Input: the scene the events were computed on, and the EV result.
 // Output: {"counts": {"EV": n}, "events": [{"kind": "EV", "vertex": id, "edge": [id, id],
-//   "intervals": [[t0, t1], ...], "intervals_approx": [[..]], "ends": [[end, end], ...]}, ...], "stats": {..}}
+//   "intervals": [[t0, t1], ...], "intervals_approx": [[..]], "ends": [[end, end], ...],
+//   "segment_ends": [{"sample_t", "beyond_edge", "behind_vertex"}, ...]}, ...], "stats": {..}}
 // where each end is {"t", "cause", "triangle", "feature", "line": {"through": [V, P(t)]}} (exact points).
 nlohmann::json ev_events_to_json(const Scene& scene, const EvResult& result);
 

@@ -89,6 +89,48 @@ inline bool line_meets_segment(const P3& p, const P3& q, const P3& u, const P3& 
   return s <= 0;
 }
 
+// Entry parameter of the ray {p + s d : s > 0} into the closed triangle (a, b, c): the infimum of the s > 0
+// where it is inside; false if none. Non-coplanar: the ratio of orientations of p and p + d.
+inline bool ray_entry(const P3& p, const P3& d, const P3& a, const P3& b, const P3& c, Q* entry) {
+  const P3 q = p + d;
+  const Q op = orient(a, b, c, p), oq = orient(a, b, c, q);
+  if (op != oq) {
+    const Q s = op / (op - oq);
+    if (s <= 0 || !in_closed_triangle(p + s * d, a, b, c)) return false;
+    *entry = s;
+    return true;
+  }
+  if (op != 0) return false;
+  // Coplanar: scan the triangle's edges as constraints on s.
+  const P3 n = crossp(b - a, c - a);
+  Q lo = 0, hi = 0;
+  bool has_hi = false;
+  const std::array<std::pair<P3, P3>, 3> edges{{{a, b}, {b, c}, {c, a}}};
+  for (const auto& [u, w] : edges) {
+    const Q f0 = dotp(crossp(w - u, p - u), n), f1 = dotp(crossp(w - u, d), n);
+    if (f1 == 0) {
+      if (f0 < 0) return false;
+      continue;
+    }
+    const Q r = -f0 / f1;
+    if (f1 > 0) lo = std::max(lo, r);
+    else if (!has_hi || r < hi) hi = r, has_hi = true;
+  }
+  if (has_hi && (hi < lo || hi <= 0)) return false;
+  *entry = lo;
+  return true;
+}
+
+// Smallest entry parameter over all triangles (false when the ray meets none).
+inline bool first_entry(const Mesh& m, const P3& p, const P3& d, Q* best) {
+  bool any = false;
+  for (const auto& t : m.t) {
+    Q s;
+    if (ray_entry(p, d, m.v[t[0]], m.v[t[1]], m.v[t[2]], &s) && (!any || s < *best)) *best = s, any = true;
+  }
+  return any;
+}
+
 struct Interval {
   Q t0, t1;
 };

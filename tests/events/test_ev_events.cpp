@@ -260,3 +260,60 @@ TEST(EvEvents, AgreesWithBruteForceOnSmallGeneratedScenes) {
 
 }  // namespace
 }  // namespace exactvis
+
+namespace exactvis {
+namespace {
+
+// Objects at both ends of each interval's sample line: the reported triangle must be hit exactly where the
+// oracle's first entry over all triangles is (ties allowed), and "none" only when the oracle finds none.
+TEST(EvEvents, SegmentEndsAgreeWithLinearScan) {
+  int checked = 0;
+  for (unsigned seed = 1; seed <= 12; ++seed) {
+    std::mt19937 rng(500 + seed);
+    std::uniform_int_distribution<int> coord(0, 6);
+    std::vector<Point3> v;
+    std::vector<std::array<int, 3>> t;
+    while (t.size() < 8) {
+      Point3 p[3];
+      for (auto& q : p) q = {double(coord(rng)), double(coord(rng)), double(coord(rng))};
+      if (collinear(p[0], p[1], p[2])) continue;
+      const int b = static_cast<int>(v.size());
+      v.insert(v.end(), {p[0], p[1], p[2]});
+      t.push_back({b, b + 1, b + 2});
+    }
+    const Scene s = make_scene(v, t);
+    const ev_oracle::Mesh m = to_oracle(s);
+    const auto r = enumerate_ev_events(s);
+    for (const auto& ev : r.events) {
+      const auto& V = s.vertices[ev.vertex];
+      const ev_oracle::P3 OV{V.x, V.y, V.z};
+      const auto& A = s.vertices[ev.edge[0]];
+      const auto& B = s.vertices[ev.edge[1]];
+      const ev_oracle::P3 OA{A.x, A.y, A.z}, OB{B.x, B.y, B.z};
+      for (const auto& iv : ev.intervals) {
+        EXPECT_EQ(iv.sample_t, (iv.t0 + iv.t1) / 2);
+        const mpq_class ts(to_rational_string(iv.sample_t));
+        const ev_oracle::P3 P = OA + ts * (OB - OA);
+        const ev_oracle::P3 d = P - OV;
+        for (int side = 0; side < 2; ++side) {
+          const ev_oracle::P3 origin = side == 0 ? P : OV;
+          const ev_oracle::P3 dir = side == 0 ? d : mpq_class(-1) * d;
+          const std::int64_t got = side == 0 ? iv.beyond_edge : iv.behind_vertex;
+          mpq_class best;
+          const bool any = ev_oracle::first_entry(m, origin, dir, &best);
+          ASSERT_EQ(got >= 0, any) << "seed " << seed << " V=" << ev.vertex << " side " << side;
+          if (!any) continue;
+          const auto& tri = m.t[s.index_of_id(got)];
+          mpq_class mine;
+          ASSERT_TRUE(ev_oracle::ray_entry(origin, dir, m.v[tri[0]], m.v[tri[1]], m.v[tri[2]], &mine));
+          EXPECT_EQ(mine, best) << "seed " << seed << " V=" << ev.vertex << " side " << side;
+          ++checked;
+        }
+      }
+    }
+  }
+  EXPECT_GT(checked, 200);
+}
+
+}  // namespace
+}  // namespace exactvis
