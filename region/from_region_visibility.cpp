@@ -107,9 +107,29 @@ std::vector<Plane3> shaft_planes(const StabbingPair& pair) {
   return planes;
 }
 
+// A shaft plane with its coefficients also as intervals, for a filtered side test without conversions.
+struct FilteredPlane {
+  Plane3 exact;
+  Interval a, b, c, d;
+  explicit FilteredPlane(const Plane3& p)
+      : exact(p), a(enclosing_interval(p.normal.x)), b(enclosing_interval(p.normal.y)),
+        c(enclosing_interval(p.normal.z)), d(enclosing_interval(p.offset)) {}
+  // Exact: is plane.value(x) > 0?
+  bool positive(const Point3& x) const {
+    {
+      CGAL::Protect_FPU_rounding<true> guard;
+      const Interval v = a * x.x + b * x.y + c * x.z - d;
+      if (v.inf() > 0) return true;
+      if (v.sup() <= 0) return false;
+    }
+    return plane_side(exact, x) == Sign::Positive;
+  }
+};
+
 std::vector<Occluder> prepare_occluders(const Scene& scene, const std::vector<std::int64_t>& candidates,
                                         std::int64_t target, const StabbingPair& pair) {
-  const std::vector<Plane3> planes = shaft_planes(pair);
+  std::vector<FilteredPlane> planes;
+  for (const auto& p : shaft_planes(pair)) planes.emplace_back(p);
   std::vector<Occluder> out;
   for (const std::int64_t idx : candidates) {
     if (idx == target) continue;
@@ -117,10 +137,8 @@ std::vector<Occluder> prepare_occluders(const Scene& scene, const std::vector<st
     bool culled = false;
     for (const auto& pl : planes) {
       // Entirely on the closed outer side of a supporting plane: meets the shaft at most in that plane,
-      // which only a measure-zero set of stabbing segments touches (docs/theory.md §5.4).
-      if (plane_side(pl, scene.corner(st, 0)) != Sign::Positive &&
-          plane_side(pl, scene.corner(st, 1)) != Sign::Positive &&
-          plane_side(pl, scene.corner(st, 2)) != Sign::Positive) {
+      // which only a measure-zero set of stabbing segments touches (docs/theory.md §5.2).
+      if (!pl.positive(scene.corner(st, 0)) && !pl.positive(scene.corner(st, 1)) && !pl.positive(scene.corner(st, 2))) {
         culled = true;
         break;
       }
