@@ -73,7 +73,7 @@ NT as(double v) { return NT(v); }
 template <class NT>
 NT as(const Exact& v) {
   if constexpr (std::is_same_v<NT, Exact>) return v;
-  else return NT(CGAL::to_interval(v));
+  else return NT(enclosing_interval(v));
 }
 
 }  // namespace exactvis
