@@ -86,7 +86,9 @@ TEST(LineThroughPointMeetingTwoLines, MatchesOracle) {
     ASSERT_TRUE(oracle::on_line(to_oracle(p), ol)) << where;
     ASSERT_EQ(sgn(oracle::side(ol, oracle::line_through(to_oracle(a1), to_oracle(a2)))), 0) << where;
     ASSERT_EQ(sgn(oracle::side(ol, oracle::line_through(to_oracle(b1), to_oracle(b2)))), 0) << where;
-    if (r.kind == PointTwoLinesKind::Unique) ASSERT_TRUE(proportional(ol, o.line)) << where;
+    if (r.kind == PointTwoLinesKind::Unique) {
+      ASSERT_TRUE(proportional(ol, o.line)) << where;
+    }
   }
   EXPECT_GT(kinds[static_cast<int>(PointTwoLinesKind::Unique)], 5000);
   EXPECT_GT(kinds[static_cast<int>(PointTwoLinesKind::None)], 50);
