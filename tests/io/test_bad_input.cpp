@@ -63,8 +63,9 @@ TEST(BadInput, AssimpInvalidModels) {
     if (entry.path().filename() == "malformed.obj") EXPECT_NE(msg.find("out of range"), std::string::npos) << msg;
     if (entry.path().filename() == "OutOfMemory.off") EXPECT_NE(msg.find("more than the file can hold"), std::string::npos) << msg;
     if (entry.path().filename().string().rfind("empty.", 0) == 0 &&
-        (entry.path().extension() == ".obj" || entry.path().extension() == ".off" || entry.path().extension() == ".ply"))
+        (entry.path().extension() == ".obj" || entry.path().extension() == ".off" || entry.path().extension() == ".ply")) {
       EXPECT_NE(msg.find("empty file"), std::string::npos) << msg;
+    }
   }
   EXPECT_GE(checked, 10);
 }
