@@ -79,13 +79,45 @@ RayHit ray_first_hit(const Scene& scene, const SpatialIndex& index, const Vec3<E
   }
   std::sort(cand.begin(), cand.end());
   cand.erase(std::unique(cand.begin(), cand.end()), cand.end());
-  for (const std::int64_t ti : cand) {
+  // Interval filter: a candidate is certainly missed if a sign is certainly wrong; the rest are tested
+  // exactly in order of their interval lower bound, stopping once that bound exceeds the best exact hit.
+  std::vector<std::pair<double, std::int64_t>> maybe;
+  {
+    CGAL::Protect_FPU_rounding<true> guard;
+    auto iv = [](const Point3& q) { return Vec3<Interval>(Interval(q.x), Interval(q.y), Interval(q.z)); };
+    const Vec3<Interval> o(CGAL::to_interval(origin.x), CGAL::to_interval(origin.y), CGAL::to_interval(origin.z));
+    const Vec3<Interval> d(CGAL::to_interval(dir.x), CGAL::to_interval(dir.y), CGAL::to_interval(dir.z));
+    for (const std::int64_t ti : cand) {
+      const auto& t = scene.triangles[ti];
+      const Vec3<Interval> a = iv(scene.corner(t, 0)), b = iv(scene.corner(t, 1)), c = iv(scene.corner(t, 2));
+      const Vec3<Interval> n = cross(b - a, c - a);
+      const Interval nd = dot(n, d), no = dot(n, a - o);
+      double lower = 0;  // lower bound of the hit parameter
+      if (nd.inf() > 0 || nd.sup() < 0) {
+        const Interval si = no / nd;
+        if (si.sup() <= 0) continue;  // certainly s <= 0
+        const Vec3<Interval> x = o + si * d;
+        bool out = false;
+        const Vec3<Interval> tri[3] = {a, b, c};
+        for (int k = 0; k < 3 && !out; ++k)
+          out = dot(cross(tri[(k + 1) % 3] - tri[k], x - tri[k]), n).sup() < 0;
+        if (out) continue;
+        lower = std::max(0.0, si.inf());
+      } else if (no.inf() > 0 || no.sup() < 0) {
+        if (nd.inf() == 0 && nd.sup() == 0) continue;  // exactly parallel and off the plane
+      }
+      maybe.emplace_back(lower, ti);
+    }
+  }
+  std::sort(maybe.begin(), maybe.end());
+  for (const auto& [lower, ti] : maybe) {
+    if (best.triangle >= 0 && Exact(lower) > best.s) break;
     const auto& t = scene.triangles[ti];
     const auto s = hit_parameter(origin, dir,
                                  {to_rational(scene.corner(t, 0)), to_rational(scene.corner(t, 1)),
                                   to_rational(scene.corner(t, 2))});
     if (!s) continue;
-    if (best.triangle < 0 || *s < best.s) best = {static_cast<int>(ti), *s};
+    if (best.triangle < 0 || *s < best.s || (*s == best.s && ti < best.triangle)) best = {static_cast<int>(ti), *s};
   }
   return best;
 }
