@@ -10,6 +10,7 @@ namespace {
 struct SweepEdge {
   int id;     // edge id
   int a, b;   // endpoints ordered so that center, a, b turn counterclockwise
+  // orientation2(a, b, center) is Positive by construction (center, a, b counterclockwise)
 };
 
 // e1 strictly closer to the center than e2 along every ray of a sector both cross (they are disjoint
@@ -21,14 +22,14 @@ struct CloserEdge {
     if (e1.id == e2.id) return false;
     const auto& P = s->points;
     const Point2 &a1 = P[e1.a], &b1 = P[e1.b], &a2 = P[e2.a], &b2 = P[e2.b];
-    const Sign sc = orientation2(a1, b1, *c);
+    const Sign sc = Sign::Positive;  // orientation2(a1, b1, center): center, a1, b1 turn counterclockwise
     const Sign o1 = orientation2(a1, b1, a2), o2 = orientation2(a1, b1, b2);
     const bool same1 = o1 == sc || o1 == Sign::Zero, same2 = o2 == sc || o2 == Sign::Zero;
     const bool opp1 = o1 == -sc || o1 == Sign::Zero, opp2 = o2 == -sc || o2 == Sign::Zero;
     if (same1 && same2) return false;  // e2 on the center's side of e1: e2 closer
     if (opp1 && opp2) return true;
     // e2 straddles line(e1); then e1 lies on one side of line(e2)
-    const Sign tc = orientation2(a2, b2, *c);
+    const Sign tc = Sign::Positive;
     const Sign p1 = orientation2(a2, b2, a1), p2 = orientation2(a2, b2, b1);
     return (p1 == tc || p1 == Sign::Zero) && (p2 == tc || p2 == Sign::Zero);
   }
@@ -47,19 +48,30 @@ std::vector<SweepEvent2D> angular_sweep(const Scene2D& scene, const Point2& c, i
   const auto& P = scene.points;
   const int n = scene.num_vertices();
   // 1. vertices sorted by direction, then distance
+  // half-plane of each direction computed once: the sort then needs one orientation per comparison
+  std::vector<char> half(n, 0);
   std::vector<int> order;
   order.reserve(n);
-  for (int v = 0; v < n; ++v)
-    if (v != center_vertex) order.push_back(v);
+  for (int v = 0; v < n; ++v) {
+    if (v == center_vertex) continue;
+    order.push_back(v);
+    const Sign sy = dy_sign(c, P[v]);
+    half[v] = sy == Sign::Positive ? 0 : (sy == Sign::Negative ? 1 : (dx_sign(c, P[v]) == Sign::Positive ? 0 : 1));
+  }
+  auto angle_cmp = [&](int u, int v) {  // -1, 0, +1 as compare_angle
+    if (half[u] != half[v]) return half[u] < half[v] ? -1 : 1;
+    const Sign o = orientation2(c, P[u], P[v]);
+    return o == Sign::Positive ? -1 : (o == Sign::Negative ? 1 : 0);
+  };
   std::sort(order.begin(), order.end(), [&](int u, int v) {
-    const int k = compare_angle(c, P[u], c, P[v]);
+    const int k = angle_cmp(u, v);
     if (k != 0) return k < 0;
     return dot_sign(P[u], P[v], c, P[u]) == Sign::Positive;  // u nearer: (v-u).(u-c) > 0
   });
   std::vector<int> group(n, -1);
   std::vector<SweepEvent2D> events;
   for (std::size_t i = 0; i < order.size(); ++i) {
-    if (i == 0 || compare_angle(c, P[order[i - 1]], c, P[order[i]]) != 0) events.emplace_back();
+    if (i == 0 || angle_cmp(order[i - 1], order[i]) != 0) events.emplace_back();
     events.back().vertices.push_back(order[i]);
     group[order[i]] = static_cast<int>(events.size()) - 1;
   }
