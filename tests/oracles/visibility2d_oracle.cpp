@@ -270,6 +270,13 @@ std::vector<std::array<int, 2>> free_segment_end_pairs(const std::vector<Polygon
   return out;
 }
 
+bool open_segment_free(const std::vector<Polygon>& scene, const Pt& p, const Pt& q) {
+  const Flat f = flatten(scene);
+  for (std::size_t v = 0; v < f.p.size(); ++v)
+    if (closed_intersect(p, q, f.p[v], f.p[f.next[v]])) return false;
+  return !inside_flat(f, {(p.x + q.x) / 2, (p.y + q.y) / 2});
+}
+
 std::vector<Polygon> random_grid_scene(std::uint64_t seed, int cells, bool convex_only) {
   std::mt19937_64 rng(seed);
   auto uni = [&](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); };

@@ -48,6 +48,10 @@ std::vector<std::array<Pt, 2>> brute_force_visible_edges(const std::vector<Polyg
 // pair of objects at its ends (-1 for infinity).
 std::vector<std::array<int, 2>> free_segment_end_pairs(const std::vector<Polygon>& scene, const Pt& p, const Pt& q);
 
+// p and q in the open free space: true iff the closed segment [p, q] meets no boundary and its midpoint is
+// outside the objects.
+bool open_segment_free(const std::vector<Polygon>& scene, const Pt& p, const Pt& q);
+
 // Random scene of disjoint polygons on a grid of cells x cells (cell size 10, integer coordinates): convex
 // polygons, star-shaped non-convex polygons, and rings with holes and islands. May be invalid (a star may
 // self-intersect); callers validate and skip. `convex_only`: convex polygons only.

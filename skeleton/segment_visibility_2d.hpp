@@ -1,0 +1,34 @@
+#pragma once
+// Segment-to-segment (from-region) visibility in the plane, exact, with a witness.
+#include "skeleton/scene2d.hpp"
+
+#include <optional>
+#include <stdexcept>
+
+namespace exactvis {
+
+struct SegmentVisibility2D {
+  bool visible = false;
+  Point2 witness_s, witness_t;  // if visible: points of S and T whose open segment lies in the open free space
+  std::size_t candidates = 0;   // candidate segments tested
+};
+
+// Does some point of S = [s0, s1] see some point of T = [t0, t1]? S and T must have positive length, meet
+// no polygon boundary and lie outside the objects (throws std::invalid_argument otherwise).
+//
+// Method (docs/theory.md, section 7): in the parameter square (sigma, tau) of segments s(sigma) t(tau), the
+// free segments form an open set bounded by the curves "s, t and a scene vertex v are collinear". Where two
+// such curves cross, or a curve leaves the square or has a pole, the line through two points of
+// {vertices, t0, t1} (or through v parallel to T) meets S: finitely many rational sigmas. Between two
+// consecutive ones the curves are disjoint graphs tau_v(sigma), so one vertical line sigma* per gap and one tau*
+// between consecutive tau_v(sigma*) sample every cell. Each sample is tested exactly; the answer is complete
+// (never "not visible" when a witness exists). O(n^2) gaps x O(n) cells x O(n) test = O(n^4) worst case;
+// stops at the first witness.
+SegmentVisibility2D segment_visibility(const Scene2D& scene, const Point2& s0, const Point2& s1, const Point2& t0,
+                                       const Point2& t1);
+
+// True iff the open segment (s, t) meets no boundary point (s and t must not lie on a boundary); with s
+// outside the objects this means the segment lies in the open free space. Exact, O(n).
+bool open_segment_free(const Scene2D& scene, const Point2& s, const Point2& t);
+
+}  // namespace exactvis
