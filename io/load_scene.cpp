@@ -322,8 +322,8 @@ RawMesh load_obj(const std::string& path, const std::string& text) {
 }
 
 // ---------------------------------------------------------------------------------------------------------
-// OFF: header counts are checked against the file size before OpenMesh allocates for them; ASCII vertex
-// coordinates are re-read exactly; faces come from OpenMesh as listed in the file.
+// OFF (ASCII only): header counts are checked against the file size before OpenMesh allocates for them;
+// vertices (exact doubles) and face lists are read here too and must agree with OpenMesh's reading.
 RawMesh load_off(const std::string& path, const std::string& text) {
   // Header: keyword, then nV nF nE (possibly on following lines), '#' comments allowed.
   std::vector<std::string_view> head;
@@ -412,9 +412,8 @@ RawMesh load_off(const std::string& path, const std::string& text) {
     if (om.faces != faces) fail(path, "OpenMesh read different face lists than the file has");
     m.faces = std::move(faces);
   } else {
-    const OpenMeshResult om = read_with_openmesh(path);
-    for (const auto& p : om.points) m.vertices.push_back({p[0], p[1], p[2]});
-    m.faces = om.faces;
+    // Its counts cannot be checked against the file size before OpenMesh allocates for them.
+    fail(path, "binary OFF is not supported (convert it to ASCII OFF, PLY or OBJ)");
   }
   return m;
 }

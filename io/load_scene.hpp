@@ -10,7 +10,8 @@
 //   shared vertices in the file; OpenMesh merges equal positions, in order of first appearance.)
 // - Objects: OBJ `g`/`o` groups when the file has any, else connected components over shared vertex ids.
 // - Coordinates: OBJ and ASCII OFF coordinates are parsed as exact doubles by us (OpenMesh parses float32);
-//   PLY and STL coordinates are what OpenMesh reads (float32; STL is float32 by definition).
+//   PLY and STL coordinates are what OpenMesh reads (float32; STL is float32 by definition). Binary OFF is
+//   refused.
 #include "kernel/scene.hpp"
 
 #include <stdexcept>

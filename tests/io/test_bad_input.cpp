@@ -132,6 +132,7 @@ TEST(BadInput, MalformedText) {
   expect_input_error(write_file(dir.file("m4.obj"), "v 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"));
   expect_input_error(write_file(dir.file("m5.off"), "OFX\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"));
   expect_input_error(write_file(dir.file("m6.off"), "OFF\n3 one 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"));
+  expect_input_error(write_file(dir.file("bin.off"), std::string("OFF BINARY\n") + std::string(12, '\xff')));
   expect_input_error(write_file(dir.file("m7.off"), "OFF\n3 1 0\n0 0 0\n1 zero 0\n0 1 0\n3 0 1 2\n"));
   expect_input_error(write_file(dir.file("m8.ply"), "ply\nformat ascii 1.0\nelement vertex 3\n"));  // no end_header
   expect_input_error(write_file(dir.file("m9.ply"), "not a ply\n"));
