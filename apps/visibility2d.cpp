@@ -1,8 +1,10 @@
 // `exactvis visibility2d SCENE2D --from X,Y [--slice z=V] [--svg out.svg] [--margin R]`: the exact
-// visibility polygon of a point, as JSON (docs/cli.md).
+// visibility polygon of a point, as JSON; or with --from-segment/--to-segment, segment-to-segment visibility
+// with an exact witness (docs/cli.md).
 #include "apps/command_registry.hpp"
 #include "io/scene2d_json.hpp"
 #include "io/svg_2d.hpp"
+#include "skeleton/segment_visibility_2d.hpp"
 #include "skeleton/visibility_polygon_2d.hpp"
 
 #include <nlohmann/json.hpp>
@@ -15,7 +17,7 @@ namespace {
 using namespace exactvis;
 
 struct Visibility2DOptions {
-  std::string scene, slice, from, svg;
+  std::string scene, slice, from, svg, from_segment, to_segment;
   double margin = 0.5;
 };
 
@@ -39,8 +41,57 @@ Point2 parse_point(const std::string& text) {
   }
 }
 
+// "X0,Y0,X1,Y1" -> two points
+std::array<Point2, 2> parse_segment(const std::string& text, const std::string& option) {
+  std::vector<std::string> parts;
+  std::size_t start = 0;
+  while (true) {
+    const auto comma = text.find(',', start);
+    parts.push_back(text.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  if (parts.size() != 4) throw std::invalid_argument(option + " expects X0,Y0,X1,Y1 (got '" + text + "')");
+  try {
+    return {Point2(parse_rational(parts[0]), parse_rational(parts[1])),
+            Point2(parse_rational(parts[2]), parse_rational(parts[3]))};
+  } catch (const std::exception&) {
+    throw std::invalid_argument(option + " expects four numbers X0,Y0,X1,Y1 (got '" + text + "')");
+  }
+}
+
+int run_segments(const Visibility2DOptions& o) {
+  const auto S = parse_segment(o.from_segment, "--from-segment");
+  const auto T = parse_segment(o.to_segment, "--to-segment");
+  const Scene2D scene = load_scene2d(o.scene, o.slice);
+  const SegmentVisibility2D r = segment_visibility(scene, S[0], S[1], T[0], T[1]);
+  ojson j;
+  j["from_segment"] = {point_json(S[0]), point_json(S[1])};
+  j["to_segment"] = {point_json(T[0]), point_json(T[1])};
+  j["visible"] = r.visible;
+  j["witness"] = r.visible ? ojson::array({point_json(r.witness_s), point_json(r.witness_t)}) : ojson();
+  j["candidates_tested"] = r.candidates;
+  std::cout << j.dump(1) << "\n";
+  if (!o.svg.empty()) {
+    SvgDocument2D doc = svg_document(scene);
+    svg_scene(doc, scene);
+    svg_segment(doc, {S[0].ax, S[0].ay}, {S[1].ax, S[1].ay}, "#1f77b4", 3);
+    svg_segment(doc, {T[0].ax, T[0].ay}, {T[1].ax, T[1].ay}, "#2ca02c", 3);
+    if (r.visible)
+      svg_segment(doc, {r.witness_s.ax, r.witness_s.ay}, {r.witness_t.ax, r.witness_t.ay}, "#d62728", 1.5);
+    svg_write(doc, o.svg);
+  }
+  return 0;
+}
+
 int run(const Visibility2DOptions& o) {
   if (!(o.margin >= 0)) throw std::invalid_argument("--margin must be >= 0");
+  const bool segments = !o.from_segment.empty() || !o.to_segment.empty();
+  if (segments && !o.from.empty()) throw std::invalid_argument("use either --from or --from-segment/--to-segment");
+  if (segments && (o.from_segment.empty() || o.to_segment.empty()))
+    throw std::invalid_argument("--from-segment and --to-segment go together");
+  if (segments) return run_segments(o);
+  if (o.from.empty()) throw std::invalid_argument("give --from X,Y (or --from-segment and --to-segment)");
   const Point2 q = parse_point(o.from);
   const Scene2D base = load_scene2d(o.scene, o.slice);
   // the frame must contain q strictly: widen it until it does
@@ -83,7 +134,9 @@ const exactvis::app::CommandRegistration registration(
       auto opts = std::make_shared<Visibility2DOptions>();
       CLI::App* sub = parent.add_subcommand("visibility2d", "exact visibility polygon of a point in a 2D scene");
       sub->add_option("scene", opts->scene, "2D scene JSON, or a 3D mesh with --slice")->required();
-      sub->add_option("--from", opts->from, "viewpoint X,Y (decimals or num/den, read exactly)")->required();
+      sub->add_option("--from", opts->from, "viewpoint X,Y (decimals or num/den, read exactly)");
+      sub->add_option("--from-segment", opts->from_segment, "segment S as X0,Y0,X1,Y1: does S see --to-segment?");
+      sub->add_option("--to-segment", opts->to_segment, "segment T as X0,Y0,X1,Y1");
       sub->add_option("--slice", opts->slice, "section of a 3D scene by a plane: x=V, y=V or z=V");
       sub->add_option("--margin", opts->margin, "frame margin around the scene, relative to its size (default 0.5)");
       sub->add_option("--svg", opts->svg, "write a picture of the visibility polygon");
