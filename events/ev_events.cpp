@@ -236,6 +236,7 @@ EvResult enumerate_ev_events(const Scene& scene, const EvOptions& options) {
   }
   if (options.segment_ends && !result.events.empty()) {
     const SpatialIndex spatial(scene);
+    const Box3 box = bounding_box(scene);
     ProgressBar ends_bar("segment ends", result.events.size(), options.progress);
     auto ends = [&](EvEvent& ev) {
       const Vec3<Exact> V = to_rational(scene.vertices[ev.vertex]);
@@ -243,8 +244,8 @@ EvResult enumerate_ev_events(const Scene& scene, const EvOptions& options) {
         iv.sample_t = (iv.t0 + iv.t1) / 2;
         const Vec3<Exact> p = ev_edge_point(scene, ev.edge, iv.sample_t);
         const Vec3<Exact> d = p - V;
-        const RayHit beyond = ray_first_hit(scene, spatial, p, d);
-        const RayHit behind = ray_first_hit(scene, spatial, V, -d);
+        const RayHit beyond = ray_first_hit(scene, spatial, box, p, d);
+        const RayHit behind = ray_first_hit(scene, spatial, box, V, -d);
         iv.beyond_edge = beyond.triangle >= 0 ? scene.triangles[beyond.triangle].id : -1;
         iv.behind_vertex = behind.triangle >= 0 ? scene.triangles[behind.triangle].id : -1;
       }

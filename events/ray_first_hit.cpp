@@ -45,10 +45,9 @@ std::optional<Exact> hit_parameter(const Vec3<Exact>& o, const Vec3<Exact>& d, c
 
 }  // namespace
 
-RayHit ray_first_hit(const Scene& scene, const SpatialIndex& index, const Vec3<Exact>& origin,
+RayHit ray_first_hit(const Scene& scene, const SpatialIndex& index, const Box3& box, const Vec3<Exact>& origin,
                      const Vec3<Exact>& dir) {
   RayHit best;
-  const Box3 box = bounding_box(scene);
   if (box.empty()) return best;
   // Exit parameter from the scene box.
   std::optional<Exact> exit;
@@ -61,9 +60,9 @@ RayHit ray_first_hit(const Scene& scene, const SpatialIndex& index, const Vec3<E
     if (!exit || s < *exit) exit = s;
   }
   if (!exit || CGAL::sign(*exit) <= 0) return best;
-  // Candidates: triangles whose boxes meet one of 8 outward-rounded boxes covering the ray inside the box.
+  // Candidates: triangles whose boxes meet one of 32 outward-rounded boxes covering the ray inside the box.
   std::vector<std::int64_t> cand;
-  const int pieces = 8;
+  const int pieces = 32;
   for (int i = 0; i < pieces; ++i) {
     const Vec3<Exact> p = origin + (*exit * Exact(i, pieces)) * dir;
     const Vec3<Exact> q = origin + (*exit * Exact(i + 1, pieces)) * dir;

@@ -14,10 +14,11 @@ struct RayHit {
                       // triangle coplanar with the ray and containing the origin, immediately after it)
 };
 
-// Input: scene, its spatial index, origin (inside or on the scene's bounding box), dir != 0.
+// Input: scene, its spatial index, its bounding box (bounding_box(scene), computed once by the caller),
+// origin (inside or on that box), dir != 0.
 // Output: the closed triangle met first by the open ray {origin + s dir : s > 0}; ties go to the lowest index.
-// Exact; candidates come from triangles_in_box over 8 outward-rounded boxes covering the ray inside the box.
-RayHit ray_first_hit(const Scene& scene, const SpatialIndex& index, const Vec3<Exact>& origin,
+// Exact; candidates come from triangles_in_box over 32 outward-rounded boxes covering the ray inside the box.
+RayHit ray_first_hit(const Scene& scene, const SpatialIndex& index, const Box3& box, const Vec3<Exact>& origin,
                      const Vec3<Exact>& dir);
 
 }  // namespace exactvis
