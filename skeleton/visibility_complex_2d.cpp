@@ -1,5 +1,7 @@
 #include "skeleton/visibility_complex_2d.hpp"
 
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <map>
 #include <numeric>
@@ -166,12 +168,6 @@ VisibilityComplex2D visibility_complex(const Scene2D& s, void (*progress)(double
           edge.sample_from = P[e->vertex];
           edge.sample_to = e->rep;
         }
-        const Point2 back(edge.sample_from.x + edge.sample_from.x - edge.sample_to.x,
-                          edge.sample_from.y + edge.sample_from.y - edge.sample_to.y);
-        if (!edge.degenerate) {
-          edge.end_objects = {first_contact(s, edge.pivot, edge.sample_from, back).object,
-                              first_contact(s, edge.pivot, edge.sample_from, edge.sample_to).object};
-        }
         cx.edges.push_back(edge);
         return static_cast<int>(cx.edges.size()) - 1;
       };
@@ -201,6 +197,15 @@ VisibilityComplex2D visibility_complex(const Scene2D& s, void (*progress)(double
       }
     }
   }
+  // end objects of each edge's sample line: two exact ray shots, in parallel
+  tbb::parallel_for(std::size_t(0), cx.edges.size(), [&](std::size_t j) {
+    ComplexEdge2D& edge = cx.edges[j];
+    if (edge.degenerate) return;
+    const Point2 back(edge.sample_from.x + edge.sample_from.x - edge.sample_to.x,
+                      edge.sample_from.y + edge.sample_from.y - edge.sample_to.y);
+    edge.end_objects = {first_contact(s, edge.pivot, edge.sample_from, back).object,
+                        first_contact(s, edge.pivot, edge.sample_from, edge.sample_to).object};
+  });
   // faces: union-find over vertex slots (6 each) and edge slots (3 each)
   UnionFind uf;
   std::vector<std::array<int, 6>> vslot(B.size());
