@@ -194,17 +194,7 @@ int run_visible(const VisibleOptions& o) {
       e["witness"] = {point_json(r.witness->p), point_json(r.witness->q)};
     }
     j["results"].push_back(e);
-    const auto& s = r.stats;
-    total.stabbing_pairs += s.stabbing_pairs;
-    total.occluders_considered += s.occluders_considered;
-    total.effective_occluders += s.effective_occluders;
-    total.samples_cast += s.samples_cast;
-    total.splits += s.splits;
-    total.cones_created += s.cones_created;
-    total.cones_alive_max = std::max(total.cones_alive_max, s.cones_alive_max);
-    total.real_line_tests += s.real_line_tests;
-    total.face_tests += s.face_tests;
-    total.exact_evaluations += s.exact_evaluations;
+    region::accumulate(total, r.stats);
   }
   j["stats"] = stats_json(total);
   j["stats"].erase("accepted_by_sampling");

@@ -438,6 +438,20 @@ std::optional<Witness> round_witness(const Scene& scene, const CandidateFinder& 
   return r;
 }
 
+void accumulate(VisibilityStats& s, const VisibilityStats& f) {
+  s.stabbing_pairs += f.stabbing_pairs;
+  s.occluders_considered += f.occluders_considered;
+  s.effective_occluders += f.effective_occluders;
+  s.samples_cast += f.samples_cast;
+  s.splits += f.splits;
+  s.cones_created += f.cones_created;
+  s.cones_alive_max = std::max(s.cones_alive_max, f.cones_alive_max);
+  s.real_line_tests += f.real_line_tests;
+  s.face_tests += f.face_tests;
+  s.exact_evaluations += f.exact_evaluations;
+  s.accepted_by_sampling |= f.accepted_by_sampling;
+}
+
 CandidateFinder brute_force_candidates(const Scene& scene) {
   return [&scene](const Box3& box) {
     std::vector<std::int64_t> out;
@@ -610,18 +624,7 @@ VisibilityResult visible_from_box(const Scene& scene, const CandidateFinder& can
       for (const auto& c : tri) in_front |= high ? (c[axis] > Exact(plane)) : (c[axis] < Exact(plane));
       if (!in_front) continue;
       VisibilityResult face = visible_from_polygon(scene, candidates, box_face(cell, axis, high), triangle_index, options);
-      auto& s = result.stats;
-      const auto& f = face.stats;
-      s.stabbing_pairs += f.stabbing_pairs;
-      s.occluders_considered += f.occluders_considered;
-      s.effective_occluders += f.effective_occluders;
-      s.samples_cast += f.samples_cast;
-      s.splits += f.splits;
-      s.cones_created += f.cones_created;
-      s.cones_alive_max = std::max(s.cones_alive_max, f.cones_alive_max);
-      s.real_line_tests += f.real_line_tests;
-      s.face_tests += f.face_tests;
-      s.accepted_by_sampling |= f.accepted_by_sampling;
+      accumulate(result.stats, face.stats);
       if (face.visible) {
         result.visible = true;
         result.witness = face.witness;

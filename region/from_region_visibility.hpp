@@ -48,6 +48,9 @@ struct VisibilityStats {
   bool accepted_by_sampling = false;
 };
 
+// Adds the counters of `part` to `total` (cones_alive_max: maximum; accepted_by_sampling: or).
+void accumulate(VisibilityStats& total, const VisibilityStats& part);
+
 struct Witness {
   RationalPoint3 p;  // on the source
   RationalPoint3 q;  // in the relative interior of the target

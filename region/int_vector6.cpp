@@ -19,17 +19,9 @@ bool is_zero(const IntVec6& v) {
 }
 
 IntVec6 to_int_vector(const PluckerLine<Exact>& e) {
-  std::array<mpq_class, 6> q;
+  RatVec6 q;
   for (int i = 0; i < 6; ++i) q[i] = mpq_class(e[i].mpq());
-  mpz_class l = 1;
-  for (const auto& c : q) mpz_lcm(l.get_mpz_t(), l.get_mpz_t(), c.get_den_mpz_t());
-  IntVec6 v;
-  for (int i = 0; i < 6; ++i) {
-    mpq_class s = q[i] * l;
-    v[i] = s.get_num();
-  }
-  normalize(v);
-  return v;
+  return to_integer(q);
 }
 
 IntVec6 side_functional(const PluckerLine<Exact>& e) {
