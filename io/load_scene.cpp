@@ -9,6 +9,8 @@
 #include <OpenMesh/Core/System/omstream.hh>
 
 #include <algorithm>
+#include <bit>
+#include <cstdint>
 #include <charconv>
 #include <cmath>
 #include <cstring>
@@ -419,44 +421,240 @@ RawMesh load_off(const std::string& path, const std::string& text) {
 }
 
 // ---------------------------------------------------------------------------------------------------------
-// PLY: counts from the header (checked against the file size before OpenMesh allocates), data from OpenMesh.
-RawMesh load_ply(const std::string& path, const std::string& text) {
-  long long nv = -1, nf = -1;
-  bool ascii = false, ended = false, double_coords = false, first = true;
-  std::string current;
-  for_each_line(text, [&](long n, std::string_view line) {
+// PLY: the header and the vertex coordinates are read here, exactly (ASCII: correctly rounded doubles from
+// the text; binary: float32 and integers widen exactly, float64 as stored), because OpenMesh reads PLY
+// coordinates as float32. Faces come from OpenMesh, whose vertex count and coordinates (up to float
+// rounding) must agree with ours. Counts are checked against the file size before anything allocates.
+
+enum class PlyScalar { I8, U8, I16, U16, I32, U32, F32, F64 };
+
+std::optional<PlyScalar> ply_scalar(std::string_view name) {
+  if (name == "char" || name == "int8") return PlyScalar::I8;
+  if (name == "uchar" || name == "uint8") return PlyScalar::U8;
+  if (name == "short" || name == "int16") return PlyScalar::I16;
+  if (name == "ushort" || name == "uint16") return PlyScalar::U16;
+  if (name == "int" || name == "int32") return PlyScalar::I32;
+  if (name == "uint" || name == "uint32") return PlyScalar::U32;
+  if (name == "float" || name == "float32") return PlyScalar::F32;
+  if (name == "double" || name == "float64") return PlyScalar::F64;
+  return std::nullopt;
+}
+
+int ply_size(PlyScalar t) {
+  switch (t) {
+    case PlyScalar::I8: case PlyScalar::U8: return 1;
+    case PlyScalar::I16: case PlyScalar::U16: return 2;
+    case PlyScalar::I32: case PlyScalar::U32: case PlyScalar::F32: return 4;
+    case PlyScalar::F64: return 8;
+  }
+  return 8;
+}
+
+bool ply_is_float(PlyScalar t) { return t == PlyScalar::F32 || t == PlyScalar::F64; }
+
+struct PlyProperty {
+  std::string name;
+  PlyScalar type = PlyScalar::F32;    // the item type for a list
+  bool is_list = false;
+  PlyScalar count_type = PlyScalar::U8;
+};
+
+struct PlyElement {
+  std::string name;
+  long long count = 0;
+  std::vector<PlyProperty> props;
+};
+
+enum class PlyFormat { Ascii, BinaryLE, BinaryBE };
+
+struct PlyHeader {
+  PlyFormat format = PlyFormat::Ascii;
+  std::vector<PlyElement> elements;
+  size_t data_offset = 0;  // first byte after the end_header line
+};
+
+PlyHeader read_ply_header(const std::string& path, const std::string& text) {
+  PlyHeader h;
+  bool have_format = false, ended = false;
+  size_t start = 0;
+  long line_no = 0;
+  while (start < text.size() && !ended) {
+    size_t end = text.find('\n', start);
+    const size_t next = end == std::string::npos ? text.size() : end + 1;
+    if (end == std::string::npos) end = text.size();
+    std::string_view line(text.data() + start, end - start);
+    if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+    ++line_no;
+    start = next;
+    const std::string where = "header line " + std::to_string(line_no) + ": ";
     auto t = tokens(line);
-    if (first) {
+    if (line_no == 1) {
       if (t.empty() || t[0] != "ply") fail(path, "not a PLY file (must start with 'ply')");
-      first = false;
-      return true;
+      continue;
     }
-    if (t.empty()) return true;
-    if (t[0] == "format" && t.size() >= 2) ascii = t[1] == "ascii";
-    if (t[0] == "element" && t.size() >= 3) {
-      current = std::string(t[1]);
+    if (t.empty()) continue;
+    if (t[0] == "format") {
+      if (t.size() != 3 || t[2] != "1.0") fail(path, where + "bad format line (expected 'format TYPE 1.0')");
+      if (t[1] == "ascii") h.format = PlyFormat::Ascii;
+      else if (t[1] == "binary_little_endian") h.format = PlyFormat::BinaryLE;
+      else if (t[1] == "binary_big_endian") h.format = PlyFormat::BinaryBE;
+      else fail(path, where + "unknown format '" + std::string(t[1]) + "'");
+      have_format = true;
+    } else if (t[0] == "element") {
+      if (t.size() != 3) fail(path, where + "bad element line (expected 'element NAME COUNT')");
       auto c = parse_int(t[2]);
-      if (!c || *c < 0) fail(path, "bad element count '" + std::string(t[2]) + "'");
-      if (current == "vertex") nv = *c;
-      if (current == "face") nf = *c;
-    }
-    if (t[0] == "property" && current == "vertex" && t.size() == 3 && t[2] == "x")
-      double_coords = t[1] == "double" || t[1] == "float64";
-    if (t[0] == "end_header") {
+      if (!c || *c < 0) fail(path, where + "bad element count '" + std::string(t[2]) + "'");
+      h.elements.push_back({std::string(t[1]), *c, {}});
+    } else if (t[0] == "property") {
+      if (h.elements.empty()) fail(path, where + "property before any element");
+      PlyProperty p;
+      if (t.size() == 5 && t[1] == "list") {
+        auto ct = ply_scalar(t[2]), it = ply_scalar(t[3]);
+        if (!ct || !it) fail(path, where + "unknown property type");
+        if (ply_is_float(*ct)) fail(path, where + "list count type must be an integer type");
+        p = {std::string(t[4]), *it, true, *ct};
+      } else if (t.size() == 3) {
+        auto ty = ply_scalar(t[1]);
+        if (!ty) fail(path, where + "unknown property type '" + std::string(t[1]) + "'");
+        p = {std::string(t[2]), *ty, false, PlyScalar::U8};
+      } else {
+        fail(path, where + "bad property line");
+      }
+      h.elements.back().props.push_back(std::move(p));
+    } else if (t[0] == "end_header") {
       ended = true;
-      return false;
+      h.data_offset = start;
     }
-    return true;
-  });
-  if (first) fail(path, "empty file");
+    // Other lines are ignored, as OpenMesh does (some exporters write free text, e.g. "Created by ...").
+  }
+  if (line_no == 0) fail(path, "empty file");
   if (!ended) fail(path, "truncated header (no end_header)");
-  if (nv < 0 || nf < 0) fail(path, "header lacks a vertex or face element");
+  if (!have_format) fail(path, "header lacks a format line");
+  return h;
+}
+
+// Reads the data section value by value (ASCII tokens or binary scalars), failing on truncation.
+struct PlyDataReader {
+  const std::string& path;
+  const std::string& text;
+  PlyFormat format;
+  size_t pos;
+
+  // Exact value of the next scalar of type t (every PLY scalar is exactly a double). `what` names it for errors.
+  double scalar(PlyScalar t, const std::string& what) {
+    if (format == PlyFormat::Ascii) {
+      while (pos < text.size() && std::isspace(static_cast<unsigned char>(text[pos]))) ++pos;
+      size_t e = pos;
+      while (e < text.size() && !std::isspace(static_cast<unsigned char>(text[e]))) ++e;
+      if (e == pos) fail(path, "truncated data: " + what + " is missing");
+      std::string_view tok(text.data() + pos, e - pos);
+      pos = e;
+      if (ply_is_float(t)) {
+        auto v = parse_double(tok);
+        if (!v) fail(path, what + ": bad number '" + std::string(tok) + "'");
+        // OpenMesh's ASCII reader (which reads the faces) parses floats with a stream that fails for good on
+        // a finite value beyond float32's range, so the rest of its reading could not be trusted.
+        if (std::isfinite(*v) && std::fabs(*v) > std::numeric_limits<float>::max())
+          fail(path, what + ": value '" + std::string(tok) +
+                         "' is beyond float32's range, which OpenMesh cannot read in ASCII PLY (use binary PLY)");
+        return *v;
+      }
+      auto v = parse_int(tok);
+      if (!v) fail(path, what + ": bad integer '" + std::string(tok) + "'");
+      return static_cast<double>(*v);
+    }
+    const int n = ply_size(t);
+    if (text.size() - pos < static_cast<size_t>(n)) fail(path, "truncated data: " + what + " is missing");
+    unsigned char b[8];
+    std::memcpy(b, text.data() + pos, n);
+    pos += n;
+    const bool big = format == PlyFormat::BinaryBE;
+    if (big != (std::endian::native == std::endian::big)) std::reverse(b, b + n);
+    switch (t) {
+      case PlyScalar::I8: { std::int8_t v; std::memcpy(&v, b, 1); return v; }
+      case PlyScalar::U8: return b[0];
+      case PlyScalar::I16: { std::int16_t v; std::memcpy(&v, b, 2); return v; }
+      case PlyScalar::U16: { std::uint16_t v; std::memcpy(&v, b, 2); return v; }
+      case PlyScalar::I32: { std::int32_t v; std::memcpy(&v, b, 4); return v; }
+      case PlyScalar::U32: { std::uint32_t v; std::memcpy(&v, b, 4); return v; }
+      case PlyScalar::F32: { float v; std::memcpy(&v, b, 4); return v; }
+      case PlyScalar::F64: { double v; std::memcpy(&v, b, 8); return v; }
+    }
+    return 0;
+  }
+
+  // Skips one property value (a list: its count, then that many items).
+  void skip(const PlyProperty& p, const std::string& what) {
+    if (!p.is_list) {
+      scalar(p.type, what);
+      return;
+    }
+    const double n = scalar(p.count_type, what + " (list count)");
+    if (n < 0) fail(path, what + ": negative list count");
+    for (long long k = 0; k < static_cast<long long>(n); ++k) scalar(p.type, what);
+  }
+};
+
+RawMesh load_ply(const std::string& path, const std::string& text) {
+  const PlyHeader h = read_ply_header(path, text);
+  const PlyElement* vertex = nullptr;
+  const PlyElement* face = nullptr;
+  for (const auto& e : h.elements) {
+    if (e.name == "vertex" && !vertex) vertex = &e;
+    if (e.name == "face" && !face) face = &e;
+  }
+  if (!vertex || !face) fail(path, "header lacks a vertex or face element");
+  const long long nv = vertex->count, nf = face->count;
   if (nf == 0) fail(path, "no faces");
+  const bool ascii = h.format == PlyFormat::Ascii;
   // Minimum bytes per vertex / face: ascii "0 0 0\n" and "3 0 1 2\n"; binary 3 bytes and 4 bytes.
   const long double need = ascii ? nv * 6.0L + nf * 8.0L : nv * 3.0L + nf * 4.0L;
   if (need > text.size())
     fail(path, "header declares " + std::to_string(nv) + " vertices and " + std::to_string(nf) +
                    " faces, more than the file can hold (truncated or corrupt)");
+  int ix[3] = {-1, -1, -1};
+  for (size_t i = 0; i < vertex->props.size(); ++i)
+    for (int k = 0; k < 3; ++k)
+      if (ix[k] < 0 && vertex->props[i].name == std::string(1, "xyz"[k])) {
+        if (vertex->props[i].is_list) fail(path, std::string("vertex property ") + "xyz"[k] + " is a list");
+        ix[k] = static_cast<int>(i);
+      }
+  for (int k = 0; k < 3; ++k)
+    if (ix[k] < 0) fail(path, std::string("vertex element lacks property ") + "xyz"[k]);
+
+  PlyDataReader in{path, text, h.format, h.data_offset};
+  for (const auto& e : h.elements) {
+    if (&e == vertex) break;
+    if (e.props.empty()) continue;  // nothing to skip (and no loop over a huge empty count)
+    // Each value takes at least one byte, so truncation ends this loop within the file's size.
+    for (long long i = 0; i < e.count; ++i)
+      for (const auto& p : e.props) in.skip(p, "element '" + e.name + "' " + std::to_string(i));
+  }
+  // Vertex data size check before allocating: binary sizes are known; an ASCII value takes >= 2 bytes.
+  long double per_vertex = 0;
+  for (const auto& p : vertex->props)
+    per_vertex += ascii ? 2 : ply_size(p.is_list ? p.count_type : p.type);
+  if (static_cast<long double>(nv) * per_vertex > static_cast<long double>(text.size() - in.pos) + 1)
+    fail(path, "header declares " + std::to_string(nv) + " vertices, more than the file can hold (truncated or corrupt)");
+  RawMesh m;
+  m.vertices.reserve(static_cast<size_t>(nv));
+  for (long long i = 0; i < nv; ++i) {
+    const std::string what = "vertex " + std::to_string(i);
+    Point3 p;
+    for (size_t j = 0; j < vertex->props.size(); ++j) {
+      const PlyProperty& prop = vertex->props[j];
+      const int k = static_cast<int>(j) == ix[0] ? 0 : static_cast<int>(j) == ix[1] ? 1 : static_cast<int>(j) == ix[2] ? 2 : -1;
+      if (k < 0) {
+        in.skip(prop, what);
+        continue;
+      }
+      const double v = in.scalar(prop.type, what);
+      if (!std::isfinite(v)) fail(path, what + " has a non-finite coordinate");
+      p[k] = v;
+    }
+    m.vertices.push_back(p);
+  }
+
   const OpenMeshResult om = read_with_openmesh(path);
   if (static_cast<long long>(om.points.size()) != nv)
     fail(path, "OpenMesh read " + std::to_string(om.points.size()) + " vertices, the header declares " +
@@ -464,10 +662,7 @@ RawMesh load_ply(const std::string& path, const std::string& text) {
   if (static_cast<long long>(om.faces.size()) != nf)
     fail(path, "OpenMesh read " + std::to_string(om.faces.size()) + " faces, the header declares " +
                    std::to_string(nf) + " (truncated?)");
-  if (double_coords)
-    std::cerr << path << ": note: PLY double coordinates are read as float32 by OpenMesh\n";
-  RawMesh m;
-  for (const auto& p : om.points) m.vertices.push_back({p[0], p[1], p[2]});
+  check_same_points(path, m.vertices, om.points);
   m.faces = om.faces;
   return m;
 }

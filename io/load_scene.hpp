@@ -9,8 +9,8 @@
 // - Vertex ids: each file's vertices in the file's order, files appended in the order given. (STL has no
 //   shared vertices in the file; OpenMesh merges equal positions, in order of first appearance.)
 // - Objects: OBJ `g`/`o` groups when the file has any, else connected components over shared vertex ids.
-// - Coordinates: OBJ and ASCII OFF coordinates are parsed as exact doubles by us (OpenMesh parses float32);
-//   PLY and STL coordinates are what OpenMesh reads (float32; STL is float32 by definition). Binary OFF is
+// - Coordinates: OBJ, ASCII OFF, PLY (ASCII and binary, any scalar type) and ASCII STL coordinates are read
+//   as exact doubles by us (OpenMesh parses float32); binary STL is float32 by definition. Binary OFF is
 //   refused.
 #include "kernel/scene.hpp"
 
