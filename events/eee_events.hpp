@@ -1,0 +1,80 @@
+#pragma once
+// EEE critical line sets with occlusion (docs/theory.md section 6, "EEE critical line sets").
+//
+// For three scene edges E1 < E2 < E3 (SceneAdjacency order; pairwise no common vertex, supporting lines
+// pairwise skew), the EEE set is the family of lines meeting all three edges. It is parameterised by the
+// point P(t) = A1 + t (B1 - A1), t in [0, 1], on E1 (A1, B1 = the positions of E1's vertex ids v[0] < v[1]):
+// L(t) is the unique line through P(t) meeting the supporting lines of E2 and E3. Line t is *valid* iff it
+// meets E2 and E3 in their relative interiors, is tangent at all three edges (edge rule of
+// events/tangency.hpp applied to each), and the open *generator segment* (the segment between the two
+// outermost of its three meeting points) meets no occluder: a closed scene triangle having none of E1, E2,
+// E3 as an edge. The valid set is a finite union of intervals whose ends are algebraic of degree <= 2 (VEE
+// lines: rational; EEEE lines through an occluder edge: quadratic); reported are the closures of its
+// components of positive length.
+#include "events/ev_events.hpp"
+#include "events/scene_adjacency.hpp"
+#include "kernel/number_types.hpp"
+#include "kernel/root_number.hpp"
+#include "kernel/scene.hpp"
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace exactvis {
+
+class OccluderIndex;
+
+// Why an EEE free interval ends at a parameter.
+struct EeeEnd {
+  enum class Cause {
+    EdgeEndpoint,  // the line passes through an endpoint of E1 (t = 0 or 1), E2 or E3 (a VEE line); `edge` =
+                   // 0, 1, 2 says which generator, `vertex` = the scene vertex id
+    Occluder,      // an occluder starts/stops blocking: `triangle` (stable id), `feature` (Vertex: VEE line
+                   // through that occluder vertex; Edge: EEEE line meeting that occluder edge; Face: degenerate)
+    Tangency,      // the line stops being tangent at generator `edge` (0, 1, 2): it lies in the plane of
+                   // `triangle` (stable id), a face incident to that edge
+    Singular,      // the transversal is parallel to E2's or E3's line there (meets it at infinity)
+  };
+  Cause cause = Cause::EdgeEndpoint;
+  int edge = -1;
+  int vertex = -1;
+  std::int64_t triangle = -1;
+  OccluderFeature feature;
+};
+
+struct EeeInterval {
+  RootNumber t0, t1;  // 0 <= t0 < t1 <= 1, exact (rational or a + b sqrt(c))
+  EeeEnd end0, end1;
+  // Objects at both ends of the maximal free segment of the sample line L(sample_t) (sample_t rational,
+  // strictly inside (t0, t1)): stable ids of the first triangles hit beyond the two outermost generators,
+  // -1 when the line leaves the scene. `front` is on the side of increasing position along the direction
+  // from P(t) towards E2's meeting point... (exact convention in docs/theory.md).
+  Exact sample_t;
+  std::int64_t end_object_front = -1, end_object_back = -1;
+};
+
+struct EeeEvent {
+  std::array<std::array<int, 2>, 3> edges{};  // scene vertex ids of E1, E2, E3, each sorted; t runs along E1
+  std::vector<EeeInterval> intervals;          // sorted, disjoint except possibly sharing an end
+};
+
+struct EeeStats {
+  std::uint64_t triples = 0;          // candidate triples examined
+  std::uint64_t tangent_triples = 0;  // triples with a non-empty tangent, in-segment parameter set
+  std::uint64_t occluder_tests = 0;   // exact occluder tests after culling
+};
+
+// The one EEE event of the edges adj.edges[e1], adj.edges[e2], adj.edges[e3] (indices into adj.edges, any
+// order: they are sorted), or std::nullopt if it has no free interval (or the edges share a vertex, or two
+// supporting lines are coplanar). Exact. Thread-safe (no shared mutable state besides `stats` if given).
+std::optional<EeeEvent> eee_event(const Scene& scene, const SceneAdjacency& adj, const OccluderIndex& index,
+                                  int e1, int e2, int e3, EeeStats* stats = nullptr);
+
+// The exact text of a parameter: "num/den" (or an integer) when rational, else "a+b*sqrt(c)" with a, b, c
+// rationals written the same way (c > 0 not a square, b != 0). docs/cli.md documents this form.
+std::string root_number_to_string(const RootNumber& x);
+
+}  // namespace exactvis
