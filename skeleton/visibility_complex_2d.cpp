@@ -76,9 +76,9 @@ Point2 add_dirs(const Point2& o, const Point2& a0, const Point2& a1, const Point
 
 }  // namespace
 
-VisibilityComplex2D visibility_complex(const Scene2D& s, void (*progress)(double)) {
+VisibilityComplex2D visibility_complex(const Scene2D& s, void (*progress)(double), VisibilityGraphMethod method) {
   VisibilityComplex2D cx;
-  cx.graph = visibility_graph(s, progress);
+  cx.graph = visibility_graph(s, progress, method);
   const auto& P = s.points;
   const auto& B = cx.graph.bitangents;
   const int n = s.num_vertices();

@@ -57,10 +57,12 @@ struct VisibilityComplex2D {
   bool gluing_consistent = true;
 };
 
-// Builds the complex. Input: a scene without frame. Cost: the visibility graph (O(n^2 log n)) plus one
-// exact O(n) ray shot per edge for its end objects, O(k n). Throws std::logic_error if a bitangent does not
-// get its 4 edges (a bug, never bad input).
-VisibilityComplex2D visibility_complex(const Scene2D& scene, void (*progress)(double) = nullptr);
+// Builds the complex. Input: a scene without frame. Cost: the visibility graph (`method`: the
+// output-sensitive rotational sweep, O((n + k) log n) for k visible pairs, by default) plus one exact
+// O(n) ray shot per edge for its end objects, O(b n) for b bitangents. Throws std::logic_error if a
+// bitangent does not get its 4 edges (a bug, never bad input).
+VisibilityComplex2D visibility_complex(const Scene2D& scene, void (*progress)(double) = nullptr,
+                                       VisibilityGraphMethod method = VisibilityGraphMethod::RotationalSweep);
 
 // First boundary point on the ray from scene vertex v in direction d1 - d0 (v's own edges are ignored;
 // the ray must not run along them). Exact, O(n).

@@ -1,6 +1,7 @@
 #include "skeleton/visibility_graph_2d.hpp"
 
 #include "skeleton/angular_sweep_2d.hpp"
+#include "skeleton/rotational_visibility_2d.hpp"
 
 #include <tbb/parallel_for.h>
 
@@ -23,11 +24,7 @@ bool in_object_wedge(const Scene2D& s, int v, const Point2& d0, const Point2& d1
 
 namespace {
 
-struct Found {
-  int w;
-  bool tangent;      // line p-w tangent at both ends
-  SegmentEnd2D beyond;  // extension beyond w (if tangent)
-};
+using Found = VisibleFrom2D;
 
 char side_at(const Scene2D& s, int v, int a, int b) {
   const auto& P = s.points;
@@ -69,15 +66,19 @@ std::vector<Found> sweep_vertex(const Scene2D& s, int p) {
 
 }  // namespace
 
-VisibilityGraph2D visibility_graph(const Scene2D& s, void (*progress)(double)) {
+VisibilityGraph2D visibility_graph(const Scene2D& s, void (*progress)(double), VisibilityGraphMethod method) {
   const int n = s.num_vertices();
   std::vector<std::vector<Found>> found(n);
-  std::atomic<int> done{0};
-  tbb::parallel_for(0, n, [&](int p) {
-    found[p] = sweep_vertex(s, p);
-    const int d = ++done;
-    if (progress && (d % 64 == 0 || d == n)) progress(static_cast<double>(d) / n);
-  });
+  if (method == VisibilityGraphMethod::RotationalSweep) {
+    found = rotational_visible_pairs(s, progress);
+  } else {
+    std::atomic<int> done{0};
+    tbb::parallel_for(0, n, [&](int p) {
+      found[p] = sweep_vertex(s, p);
+      const int d = ++done;
+      if (progress && (d % 64 == 0 || d == n)) progress(static_cast<double>(d) / n);
+    });
+  }
   VisibilityGraph2D g;
   for (int v = 0; v < n; ++v) g.ring_edges.emplace_back(v, s.next[v]);
   // extension beyond p as seen from q's sweep

@@ -42,10 +42,25 @@ struct VisibilityGraph2D {
   std::vector<Bitangent2D> bitangents;            // sorted by (a, b)
 };
 
+// A vertex w seen strictly from a vertex p, as found from p: whether the line p-w is tangent at both ends
+// (a free bitangent) and, if so, the end of the maximal free segment beyond w.
+struct VisibleFrom2D {
+  int w = -1;
+  bool tangent = false;
+  SegmentEnd2D beyond;
+};
+
+// How the visible pairs are found. Both give exactly the same graph (tests compare them with each other
+// and with an O(n^3) brute force).
+enum class VisibilityGraphMethod {
+  RotationalSweep,  // one output-sensitive sweep of all views, O((n + k) log n) (rotational_visibility_2d)
+  PerVertexSweep,   // one angular sweep per vertex, O(n^2 log n), on all cores (the reference)
+};
+
 // Input: a scene (a frame, if present, takes part like any ring). Output: the visibility graph with its
-// free bitangents. One angular sweep per vertex, O(n^2 log n) time, run on all cores (oneTBB).
-// `progress` (may be null) is called with the fraction done.
-VisibilityGraph2D visibility_graph(const Scene2D& scene, void (*progress)(double) = nullptr);
+// free bitangents. `progress` (may be null) is called with the fraction done.
+VisibilityGraph2D visibility_graph(const Scene2D& scene, void (*progress)(double) = nullptr,
+                                   VisibilityGraphMethod method = VisibilityGraphMethod::RotationalSweep);
 
 // Local tests at a scene vertex v for the direction d = d1 - d0 (exact):
 // d points into the open free wedge at v,

@@ -1,0 +1,324 @@
+#include "skeleton/rotational_visibility_2d.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <queue>
+#include <set>
+#include <stdexcept>
+
+namespace exactvis {
+namespace {
+
+// A direction as the vector to - from (never zero).
+struct Dir {
+  const Point2* from = nullptr;
+  const Point2* to = nullptr;
+};
+
+bool is_start_direction(const Dir& d) {  // direction (1, 0)
+  return dy_sign(*d.from, *d.to) == Sign::Zero && dx_sign(*d.from, *d.to) == Sign::Positive;
+}
+
+// Order of directions in the sweep, which runs over the angles (0, 2pi]: direction (1, 0) comes last.
+int sweep_compare(const Dir& u, const Dir& v) {
+  const bool su = is_start_direction(u), sv = is_start_direction(v);
+  if (su || sv) return su == sv ? 0 : (su ? 1 : -1);
+  return compare_angle(*u.from, *u.to, *v.from, *v.to);
+}
+
+// Vertex p is on the ray from... : q - p has direction d.
+bool same_direction(const Dir& d, const Point2& p, const Point2& q) {
+  return cross_sign(*d.from, *d.to, p, q) == Sign::Zero && dot_sign(*d.from, *d.to, p, q) == Sign::Positive;
+}
+
+constexpr int kOwn = -2;  // view: the ray runs inside the vertex's own object
+
+// Order of the viewers of one edge (or of infinity) across the rays of direction theta+ (theta turned
+// counterclockwise by an infinitesimal): by the offset cross(d, p), smaller first; on one line of
+// direction d, the vertex further along d first (turning the rays counterclockwise moves the one behind
+// to the left). Equal to the order of the hit points along the viewed edge.
+struct ViewerLess {
+  const std::vector<Point2>* P;
+  const Dir* d;
+  bool operator()(int p, int q) const {
+    if (p == q) return false;
+    const Point2 &a = (*P)[p], &b = (*P)[q];
+    const Sign c = cross_sign(*d->from, *d->to, b, a);  // cross(d, a - b)
+    if (c != Sign::Zero) return c == Sign::Negative;
+    return dot_sign(*d->from, *d->to, b, a) == Sign::Positive;
+  }
+};
+
+// Views at the start direction (1, 0)+ = (1, eps): a plane sweep across the rays, in the order of the
+// offset k(v) = y - eps x, keeping the edges crossed by the current ray ordered along it.
+struct StartQuery {
+  int v;
+};
+
+struct StartSweep {
+  const Scene2D& s;
+  std::vector<int> lo, hi;  // per edge: endpoint with the smaller / larger offset
+
+  // u before v in the offset order: y ascending, then x descending.
+  bool offset_less(int u, int v) const {
+    const Sign sy = dy_sign(s.points[u], s.points[v]);
+    if (sy != Sign::Zero) return sy == Sign::Positive;
+    return dx_sign(s.points[u], s.points[v]) == Sign::Negative;
+  }
+
+  struct Less {
+    const StartSweep* sw;
+    using is_transparent = void;
+    // Two edges crossed by one ray, disjoint: e1 nearer along the ray. Ahead of an edge directed from
+    // lo to hi is its right side.
+    bool operator()(int e1, int e2) const {
+      if (e1 == e2) return false;
+      const auto& P = sw->s.points;
+      const Point2 &a1 = P[sw->lo[e1]], &b1 = P[sw->hi[e1]], &a2 = P[sw->lo[e2]], &b2 = P[sw->hi[e2]];
+      const Sign o1 = orientation2(a1, b1, a2), o2 = orientation2(a1, b1, b2);
+      if (o1 != Sign::Positive && o2 != Sign::Positive) return true;    // e2 ahead of line(e1)
+      if (o1 != Sign::Negative && o2 != Sign::Negative) return false;  // e2 behind
+      const Sign p1 = orientation2(a2, b2, a1), p2 = orientation2(a2, b2, b1);
+      return p1 != Sign::Negative && p2 != Sign::Negative;  // e1 behind line(e2)
+    }
+    // edge before the query vertex: the vertex lies ahead of it
+    bool operator()(int e, StartQuery q) const {
+      const auto& P = sw->s.points;
+      return orientation2(P[sw->lo[e]], P[sw->hi[e]], P[q.v]) == Sign::Negative;
+    }
+    bool operator()(StartQuery q, int e) const {
+      const auto& P = sw->s.points;
+      return orientation2(P[sw->lo[e]], P[sw->hi[e]], P[q.v]) == Sign::Positive;
+    }
+  };
+
+  // view[v] for every vertex whose start ray is free (others keep their value): edge id or -1.
+  void run(std::vector<int>& view, const std::vector<char>& own) {
+    const int n = s.num_vertices();
+    lo.resize(n);
+    hi.resize(n);
+    std::vector<std::vector<int>> starting(n), ending(n);
+    for (int e = 0; e < n; ++e) {
+      int a = e, b = s.next[e];
+      if (offset_less(b, a)) std::swap(a, b);
+      lo[e] = a;
+      hi[e] = b;
+      starting[a].push_back(e);
+      ending[b].push_back(e);
+    }
+    std::vector<int> order(n);
+    for (int v = 0; v < n; ++v) order[v] = v;
+    std::sort(order.begin(), order.end(), [&](int u, int v) { return offset_less(u, v); });
+    std::set<int, Less> status(Less{this});
+    std::vector<std::set<int, Less>::iterator> where(n, status.end());
+    for (int v : order) {
+      for (int e : ending[v]) {
+        status.erase(where[e]);
+        where[e] = status.end();
+      }
+      if (!own[v]) {
+        const auto it = status.lower_bound(StartQuery{v});
+        view[v] = it == status.end() ? -1 : *it;
+      }
+      for (int e : starting[v]) where[e] = status.insert(e).first;
+    }
+  }
+};
+
+// The direction theta+ lies in the open counterclockwise sector from a to b iff theta is in [a, b).
+bool after_in_sector(const Dir& d, const Point2& a0, const Point2& a1, const Point2& b0, const Point2& b1) {
+  if (cross_sign(*d.from, *d.to, a0, a1) == Sign::Zero && dot_sign(*d.from, *d.to, a0, a1) == Sign::Positive)
+    return true;
+  return in_open_ccw_sector(*d.from, *d.to, a0, a1, b0, b1);
+}
+
+struct Sweep {
+  const Scene2D& s;
+  const std::vector<Point2>& P;
+  int n;
+  Dir cur;                 // current direction; the lists are ordered for cur+
+  bool started = false;    // false before the first event: every candidate lies ahead
+  std::vector<int> view;   // kOwn, -1 (infinity) or edge id; the state at cur+
+  std::vector<std::set<int, ViewerLess>> lists;  // per edge, and lists[n] for infinity
+  std::vector<std::set<int, ViewerLess>::iterator> where;
+  std::vector<int> version;
+
+  struct Entry {
+    Dir d;
+    int v;
+    int version;
+  };
+  struct Later {
+    bool operator()(const Entry& x, const Entry& y) const { return sweep_compare(x.d, y.d) > 0; }
+  };
+  std::priority_queue<Entry, std::vector<Entry>, Later> heap;
+
+  explicit Sweep(const Scene2D& scene) : s(scene), P(scene.points), n(scene.num_vertices()) {}
+
+  std::set<int, ViewerLess>& list_of(int v) { return lists[view[v] < 0 ? n : view[v]]; }
+
+  // The next event of v after cur (v's state at cur+), pushed with a fresh version.
+  void schedule(int v) {
+    const int ver = ++version[v];
+    Dir best;
+    bool have = false;
+    auto consider = [&](int to) {
+      const Dir d{&P[v], &P[to]};
+      if (started && sweep_compare(d, cur) <= 0) return;  // wraps past the end of the turn
+      if (!have || sweep_compare(d, best) < 0) best = d, have = true;
+    };
+    if (view[v] == kOwn) {
+      consider(s.prev[v]);  // the ray leaves the object along edge (v, prev v)
+    } else {
+      consider(s.next[v]);  // the ray enters the object along edge (v, next v)
+      const auto it = std::next(where[v]);
+      if (it != list_of(v).end()) consider(*it);  // the left neighbour: v's ray will pass it
+      if (view[v] >= 0) {
+        const int a = view[v], b = s.next[a];
+        consider(orientation2(P[v], P[a], P[b]) == Sign::Positive ? b : a);  // counterclockwise end
+      }
+    }
+    if (have) heap.push({best, v, ver});
+  }
+
+  void insert(int v) {
+    if (view[v] == kOwn) return;
+    where[v] = list_of(v).insert(v).first;
+  }
+
+  // New view of a ray of direction cur+ that passes vertex q on its left (q's view at cur+ is final).
+  int pass(int q) const {
+    const Point2& c = P[q];
+    const int u1 = s.next[q], u2 = s.prev[q];
+    const bool l1 = cross_sign(*cur.from, *cur.to, c, P[u1]) == Sign::Positive;
+    const bool l2 = cross_sign(*cur.from, *cur.to, c, P[u2]) == Sign::Positive;
+    if (l1 && l2) return cross_sign(c, P[u1], c, P[u2]) == Sign::Negative ? q : u2;  // larger angle first
+    if (l1) return q;
+    if (l2) return u2;
+    if (view[q] == kOwn) throw std::logic_error("rotational_visible_pairs: inherited an own-object view (bug)");
+    return view[q];
+  }
+
+  struct Hit {
+    enum Kind { None, EnterOwn, LeaveOwn, Vertex } kind = None;
+    int q = -1;
+  };
+
+  std::vector<std::vector<VisibleFrom2D>> run(void (*progress)(double)) {
+    std::vector<std::vector<VisibleFrom2D>> found(n);
+    static const Point2 origin(0.0, 0.0), unit_x(1.0, 0.0);
+    cur = {&origin, &unit_x};
+    view.assign(n, -1);
+    version.assign(n, 0);
+    std::vector<char> own(n, 0);
+    for (int v = 0; v < n; ++v) {
+      own[v] = after_in_sector(cur, P[v], P[s.next[v]], P[v], P[s.prev[v]]);
+      if (own[v]) view[v] = kOwn;
+    }
+    StartSweep{s, {}, {}}.run(view, own);
+    lists.assign(n + 1, std::set<int, ViewerLess>(ViewerLess{&P, &cur}));
+    where.resize(n);
+    for (int v = 0; v < n; ++v) insert(v);
+    for (int v = 0; v < n; ++v) schedule(v);
+    started = true;
+
+    std::vector<int> S;
+    std::vector<Hit> hit(n);
+    std::vector<char> in_S(n, 0);
+    std::vector<int> touched;
+    std::size_t steps = 0;
+    while (!heap.empty()) {
+      // all valid events at the next direction
+      const Dir d = heap.top().d;
+      S.clear();
+      while (!heap.empty() && sweep_compare(heap.top().d, d) == 0) {
+        const Entry e = heap.top();
+        heap.pop();
+        if (e.version != version[e.v] || in_S[e.v]) continue;
+        in_S[e.v] = 1;
+        S.push_back(e.v);
+      }
+      if (S.empty()) continue;
+      // 1. what each ray meets first at exactly d, from the state at d- (lists not yet changed)
+      for (int p : S) {
+        Hit h;
+        if (view[p] == kOwn) {
+          if (same_direction(d, P[p], P[s.prev[p]])) h = {Hit::LeaveOwn, s.prev[p]};
+        } else if (same_direction(d, P[p], P[s.next[p]])) {
+          h = {Hit::EnterOwn, s.next[p]};
+        } else {
+          const auto it = std::next(where[p]);
+          if (it != list_of(p).end() && same_direction(d, P[p], P[*it])) {
+            h = {Hit::Vertex, *it};
+          } else if (view[p] >= 0) {
+            const int a = view[p], b = s.next[a];
+            const int end = orientation2(P[p], P[a], P[b]) == Sign::Positive ? b : a;
+            if (same_direction(d, P[p], P[end])) h = {Hit::Vertex, end};
+          }
+        }
+        if (h.kind == Hit::None) throw std::logic_error("rotational_visible_pairs: empty event (bug)");
+        hit[p] = h;
+      }
+      // 2. the strict pairs, with the maximal free segment's end beyond w for tangent ones
+      for (int p : S) {
+        if (hit[p].kind != Hit::Vertex) continue;
+        const int w = hit[p].q;
+        if (!in_free_wedge(s, p, P[p], P[w]))
+          throw std::logic_error("rotational_visible_pairs: visible vertex outside the free wedge (bug)");
+        VisibleFrom2D f;
+        f.w = w;
+        f.tangent = !in_object_wedge(s, p, P[w], P[p]) && !in_object_wedge(s, w, P[p], P[w]);
+        if (f.tangent) {
+          const auto along = [&](int u) { return same_direction(d, P[w], P[u]); };
+          if (along(s.next[w]) || along(s.prev[w])) {
+            f.beyond = {SegmentEnd2D::Vertex, w, s.object_of(w), P[w]};
+          } else if (in_S[w] && hit[w].kind == Hit::Vertex) {
+            const int r = hit[w].q;
+            f.beyond = {SegmentEnd2D::Vertex, r, s.object_of(r), P[r]};
+          } else if (view[w] >= 0) {
+            const int e = view[w];
+            f.beyond = {SegmentEnd2D::EdgeInterior, e, s.object_of(e),
+                        line_intersection(P[p], P[p], P[w], P[e], P[s.next[e]])};
+          } else if (view[w] == kOwn) {
+            throw std::logic_error("rotational_visible_pairs: tangent ray inside its object (bug)");
+          }
+        }
+        found[p].push_back(std::move(f));
+      }
+      // 3. leave the lists (in the order at d-), then turn the order to d+ and enter the new views,
+      //    further along d first: a ray passing q inherits q's view at d+
+      touched.clear();
+      for (int p : S) {
+        if (view[p] == kOwn) continue;
+        auto& L = list_of(p);
+        if (where[p] != L.begin()) touched.push_back(*std::prev(where[p]));
+        L.erase(where[p]);
+      }
+      cur = d;
+      std::sort(S.begin(), S.end(), [&](int a, int b) { return dot_sign(*d.from, *d.to, P[b], P[a]) == Sign::Positive; });
+      for (int p : S) {
+        view[p] = hit[p].kind == Hit::EnterOwn ? kOwn : pass(hit[p].q);
+        insert(p);
+        if (view[p] != kOwn && where[p] != list_of(p).begin()) touched.push_back(*std::prev(where[p]));
+      }
+      for (int p : S) in_S[p] = 0;
+      for (int p : S) schedule(p);
+      for (int v : touched) schedule(v);
+      if (progress && (++steps % 4096 == 0)) {
+        const double a = std::atan2(d.to->ay - d.from->ay, d.to->ax - d.from->ax);
+        progress((a < 0 ? a + 6.283185307179586 : a) / 6.283185307179586);
+      }
+    }
+    if (progress) progress(1.0);
+    return found;
+  }
+};
+
+}  // namespace
+
+std::vector<std::vector<VisibleFrom2D>> rotational_visible_pairs(const Scene2D& scene, void (*progress)(double)) {
+  Sweep sweep(scene);
+  return sweep.run(progress);
+}
+
+}  // namespace exactvis

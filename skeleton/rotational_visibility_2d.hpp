@@ -1,0 +1,27 @@
+#pragma once
+// Output-sensitive construction of the visibility graph of a 2D scene: one rotational sweep of the
+// direction theta for all vertices at once (docs/theory.md, section 7, "Construction").
+//
+// Every vertex p keeps its *view*: what the ray from p in direction theta+ (just counterclockwise of the
+// current direction) meets first: its own object, an edge interior, or infinity. The vertices viewing
+// one edge (or infinity) are kept in a list ordered across the ray direction. A view changes only when
+// the ray of p passes a vertex q; then p's new view is an edge of q or q's own view (inheritance, the
+// rotation-tree principle). Such a q is either the counterclockwise end of p's viewed edge or p's
+// neighbour in the list (a vertex appearing in the middle of p's view is, just before, a viewer of the
+// same edge next to p), so each event is a visible pair or a local event at p's own edges, found in
+// exact direction order with a priority queue: O((n + k) log n) for n vertices and k visible pairs,
+// after an O(n log n) plane sweep for the views at the start direction.
+#include "skeleton/visibility_graph_2d.hpp"
+
+#include <vector>
+
+namespace exactvis {
+
+// Input: a scene (a frame, if present, takes part like any ring). Output: for every vertex p, the
+// vertices w it sees strictly (open segment p-w in the open free space), each once, with the tangency
+// flag and, for tangent pairs, the end of the maximal free segment beyond w (visibility_graph_2d.hpp).
+// Sequential; `progress` (may be null) gets the swept fraction of the full turn.
+std::vector<std::vector<VisibleFrom2D>> rotational_visible_pairs(const Scene2D& scene,
+                                                                 void (*progress)(double) = nullptr);
+
+}  // namespace exactvis

@@ -1,0 +1,255 @@
+// The output-sensitive rotational sweep (skeleton/rotational_visibility_2d) against two references that
+// share none of its code: the per-vertex angular sweep (the previous construction) and exact brute
+// forces with gmpxx rationals (strict pairs here, bitangents with their maximal free segments in
+// tests/oracles). Random and degenerate scenes with fixed seeds: integer grids (collinear vertices across
+// objects, parallel edges), flat vertices, holes, non-convex polygons, concurrent bitangents, frames.
+#include "scene2d_test_util.hpp"
+#include "skeleton/rotational_visibility_2d.hpp"
+#include "skeleton/visibility_complex_2d.hpp"
+
+#include <gtest/gtest.h>
+
+#include <random>
+#include <set>
+#include <tuple>
+
+using namespace exactvis;
+using namespace exactvis::test2d;
+
+namespace {
+
+using oracle2d::Pt;
+
+// Exact brute force: the open segment (p, q) meets no closed edge and its midpoint is outside the objects.
+bool brute_strict(const std::vector<oracle2d::Polygon>& polys, const Pt& p, const Pt& q) {
+  const mpq_class dx = q.x - p.x, dy = q.y - p.y;
+  for (const auto& poly : polys)
+    for (const auto& ring : poly.rings)
+      for (std::size_t i = 0; i < ring.size(); ++i) {
+        const auto &ra = ring[i], &rb = ring[(i + 1) % ring.size()];
+        // bounding boxes apart (exact: input coordinates are doubles, compared as rationals)
+        if (std::max(mpq_class(ra[0]), mpq_class(rb[0])) < std::min(p.x, q.x) ||
+            std::min(mpq_class(ra[0]), mpq_class(rb[0])) > std::max(p.x, q.x) ||
+            std::max(mpq_class(ra[1]), mpq_class(rb[1])) < std::min(p.y, q.y) ||
+            std::min(mpq_class(ra[1]), mpq_class(rb[1])) > std::max(p.y, q.y))
+          continue;
+        const Pt a{ra[0], ra[1]}, b{rb[0], rb[1]};
+        const mpq_class ex = b.x - a.x, ey = b.y - a.y;
+        const mpq_class den = dx * ey - dy * ex;
+        if (den != 0) {  // t on (p, q), s on [a, b]
+          const mpq_class t = ((a.x - p.x) * ey - (a.y - p.y) * ex) / den;
+          const mpq_class s = ((a.x - p.x) * dy - (a.y - p.y) * dx) / den;
+          if (t > 0 && t < 1 && s >= 0 && s <= 1) return false;
+          continue;
+        }
+        if ((a.x - p.x) * dy - (a.y - p.y) * dx != 0) continue;  // parallel, not collinear
+        const mpq_class len = dx * dx + dy * dy;
+        const mpq_class ta = ((a.x - p.x) * dx + (a.y - p.y) * dy) / len;
+        const mpq_class tb = ((b.x - p.x) * dx + (b.y - p.y) * dy) / len;
+        if (std::max(ta, tb) > 0 && std::min(ta, tb) < 1) return false;
+      }
+  const Pt mid{(p.x + q.x) / 2, (p.y + q.y) / 2};
+  return !oracle2d::inside_object(polys, mid);
+}
+
+std::set<std::pair<int, int>> brute_pairs(const std::vector<oracle2d::Polygon>& polys, const Scene2D& s) {
+  std::set<std::pair<int, int>> out;
+  for (int p = 0; p < s.num_vertices(); ++p)
+    for (int q = p + 1; q < s.num_vertices(); ++q)
+      if (brute_strict(polys, to_pt(s.points[p]), to_pt(s.points[q]))) out.emplace(p, q);
+  return out;
+}
+
+std::string describe(const Scene2D& s, const Bitangent2D& b) {
+  auto pt = [](const Point2& p) { const Pt q = to_pt(p); return "(" + q.x.get_str() + "," + q.y.get_str() + ")"; };
+  auto end = [&](const SegmentEnd2D& e) {
+    return e.kind == SegmentEnd2D::Infinity ? std::string("inf")
+                                            : std::to_string(e.kind) + ":" + std::to_string(e.id) + pt(e.point);
+  };
+  return std::to_string(b.a) + "-" + std::to_string(b.b) + " " + b.kind() + " " + end(b.end_a) + " " + end(b.end_b);
+}
+
+// New sweep == per-vertex sweep (pairs, bitangents, kinds, both ends), and == brute force (pairs, and
+// bitangents with their free segments when `bitangent_oracle`).
+void expect_same(const std::vector<oracle2d::Polygon>& polys, const Scene2D& s, bool bitangent_oracle) {
+  const auto fast = visibility_graph(s, nullptr, VisibilityGraphMethod::RotationalSweep);
+  const auto ref = visibility_graph(s, nullptr, VisibilityGraphMethod::PerVertexSweep);
+  EXPECT_EQ(fast.strict_pairs, ref.strict_pairs);
+  ASSERT_EQ(fast.bitangents.size(), ref.bitangents.size());
+  for (std::size_t i = 0; i < fast.bitangents.size(); ++i)
+    EXPECT_EQ(describe(s, fast.bitangents[i]), describe(s, ref.bitangents[i]));
+  const std::set<std::pair<int, int>> mine(fast.strict_pairs.begin(), fast.strict_pairs.end());
+  EXPECT_EQ(mine, brute_pairs(polys, s));
+  if (!bitangent_oracle) return;
+  std::set<std::string> expected, got;
+  for (const auto& b : oracle2d::brute_force_bitangents(polys))
+    expected.insert(b.a.x.get_str() + "," + b.a.y.get_str() + "|" + b.b.x.get_str() + "," + b.b.y.get_str() + "|" +
+                    b.kind + "|" + (b.end_a_infinite ? "inf" : b.end_a.x.get_str() + "," + b.end_a.y.get_str()) +
+                    "|" + (b.end_b_infinite ? "inf" : b.end_b.x.get_str() + "," + b.end_b.y.get_str()));
+  for (const auto& b : fast.bitangents) {
+    Pt a = to_pt(s.points[b.a]), c = to_pt(s.points[b.b]);
+    std::string kind = b.kind();
+    SegmentEnd2D ea = b.end_a, eb = b.end_b;
+    if (c < a) {
+      std::swap(a, c);
+      std::swap(ea, eb);
+      auto flip = [](char x) { return x == 'L' ? 'R' : 'L'; };
+      kind = {flip(kind[1]), flip(kind[0])};
+    }
+    auto end = [](const SegmentEnd2D& e) {
+      if (e.kind == SegmentEnd2D::Infinity) return std::string("inf");
+      const Pt p = to_pt(e.point);
+      return p.x.get_str() + "," + p.y.get_str();
+    };
+    got.insert(a.x.get_str() + "," + a.y.get_str() + "|" + c.x.get_str() + "," + c.y.get_str() + "|" + kind + "|" +
+               end(ea) + "|" + end(eb));
+  }
+  EXPECT_EQ(got, expected);
+}
+
+oracle2d::Ring box(double x0, double y0, double x1, double y1) { return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}; }
+
+// Axis-parallel rectangles on a small integer grid, some with flat vertices at edge midpoints (parallel
+// and collinear edges everywhere), some with a rectangular hole holding an island.
+std::vector<oracle2d::Polygon> random_box_scene(std::uint64_t seed, int count) {
+  std::mt19937_64 rng(seed);
+  auto uni = [&](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); };
+  std::vector<oracle2d::Polygon> out;
+  std::vector<std::array<int, 4>> used;
+  for (int tries = 0; tries < 50 && static_cast<int>(out.size()) < count; ++tries) {
+    const int x0 = 2 * uni(0, 8), y0 = 2 * uni(0, 8), w = 2 * uni(1, 3), h = 2 * uni(1, 3);
+    const std::array<int, 4> r{x0, y0, x0 + w, y0 + h};
+    bool clash = false;
+    for (const auto& u : used)
+      if (r[0] <= u[2] && u[0] <= r[2] && r[1] <= u[3] && u[1] <= r[3]) clash = true;
+    if (clash) continue;
+    used.push_back(r);
+    const int type = uni(0, 3);
+    if (type == 0 && w >= 6 && h >= 6) {  // ring with a hole and an island
+      out.push_back({{box(r[0], r[1], r[2], r[3]), box(r[0] + 1, r[1] + 1, r[2] - 1, r[3] - 1)}});
+      out.push_back({{box(r[0] + 2, r[1] + 2, r[0] + 3, r[1] + 3)}});
+    } else if (type == 1) {  // flat vertices at the midpoints
+      const double mx = (r[0] + r[2]) / 2.0, my = (r[1] + r[3]) / 2.0;
+      out.push_back({{{{double(r[0]), double(r[1])}, {mx, double(r[1])}, {double(r[2]), double(r[1])},
+                       {double(r[2]), my}, {double(r[2]), double(r[3])}, {mx, double(r[3])},
+                       {double(r[0]), double(r[3])}, {double(r[0]), my}}}});
+    } else if (type == 2) {  // an L shape (non-convex)
+      out.push_back({{{{double(r[0]), double(r[1])}, {double(r[2]), double(r[1])}, {double(r[2]), r[1] + h / 2.0},
+                       {r[0] + w / 2.0, r[1] + h / 2.0}, {r[0] + w / 2.0, double(r[3])},
+                       {double(r[0]), double(r[3])}}}});
+    } else {
+      out.push_back({{box(r[0], r[1], r[2], r[3])}});
+    }
+  }
+  return out;
+}
+
+// Triangles with vertices on a 7 x 7 grid: many collinear triples and parallel edges across objects.
+std::vector<oracle2d::Polygon> random_triangle_scene(std::uint64_t seed, int count) {
+  std::mt19937_64 rng(seed);
+  auto uni = [&](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); };
+  std::vector<oracle2d::Polygon> out;
+  for (int tries = 0; tries < 200 && static_cast<int>(out.size()) < count; ++tries) {
+    oracle2d::Ring t{{double(uni(0, 6)), double(uni(0, 6))}, {double(uni(0, 6)), double(uni(0, 6))},
+                     {double(uni(0, 6)), double(uni(0, 6))}};
+    auto candidate = out;
+    candidate.push_back({{t}});
+    if (try_scene(candidate)) out = std::move(candidate);
+  }
+  return out;
+}
+
+}  // namespace
+
+TEST(RotationalVisibility2D, HandPickedDegenerateScenes) {
+  const std::vector<std::vector<oracle2d::Polygon>> scenes{
+      {{{box(0, 0, 1, 1)}}, {{box(3, 0.5, 4, 2)}}},
+      {{{box(0, 0, 1, 1)}}, {{box(2, 0, 3, 1)}}, {{box(4, 0, 5, 1)}}},  // collinear edges
+      {{{box(2, 1, 3, 2)}}, {{box(-3, -2, -2, -1)}}, {{box(-2, 2, -1, 3)}}, {{box(1, -3, 2, -2)}},
+       {{box(0.5, 2, 1, 3)}}, {{box(-1, -3, -0.5, -2)}}},  // three bitangents through the origin
+      {{{{{0, 0}, {3, 0}, {3, 3}, {2, 3}, {2, 1}, {1, 1}, {1, 3}, {0, 3}}}}},  // U shape
+      {{{box(0, 0, 10, 10), box(2, 2, 8, 8)}}, {{box(4, 4, 5, 5)}}, {{box(6, 4, 7, 5)}}},  // hole, islands
+      {{{{{0, 0}, {1, 0}, {2, 0}, {2, 1}, {2, 2}, {1, 2}, {0, 2}, {0, 1}}}}, {{box(3, 0, 4, 2)}}},  // flat
+      {{{box(0, 0, 1, 1)}}},  // one object: only its own edges
+      {{{{{0, 0}, {1, 0}, {0, 1}}}}, {{{{1, 1}, {2, 1}, {1, 2}}}}, {{{{2, 2}, {3, 2}, {2, 3}}}}},  // diagonal chain
+  };
+  for (std::size_t i = 0; i < scenes.size(); ++i) {
+    SCOPED_TRACE("scene " + std::to_string(i));
+    const Scene2D s = make_scene2d(to_input(scenes[i]));
+    expect_same(scenes[i], s, true);
+  }
+}
+
+TEST(RotationalVisibility2D, RandomGridScenesMatchPerVertexSweepAndBruteForce) {
+  int tested = 0;
+  std::size_t pairs = 0;
+  for (std::uint64_t seed = 1; tested < 60 && seed < 600; ++seed) {
+    const auto polys = oracle2d::random_grid_scene(seed, seed % 3 == 0 ? 3 : 2, seed % 4 == 0);
+    const auto s = try_scene(polys);
+    if (!s || s->num_vertices() > 70) continue;
+    ++tested;
+    SCOPED_TRACE("grid seed " + std::to_string(seed));
+    expect_same(polys, *s, true);
+    pairs += visibility_graph(*s).strict_pairs.size();
+  }
+  EXPECT_GE(tested, 50);
+  EXPECT_GE(pairs, 3000u);  // not vacuous
+}
+
+TEST(RotationalVisibility2D, RandomBoxScenesWithFlatVerticesHolesAndCollinearEdges) {
+  std::size_t pairs = 0;
+  for (std::uint64_t seed = 1; seed <= 150; ++seed) {
+    const auto polys = random_box_scene(seed, 3 + seed % 6);
+    const auto s = try_scene(polys);
+    ASSERT_TRUE(s.has_value()) << "seed " << seed;
+    SCOPED_TRACE("box seed " + std::to_string(seed));
+    expect_same(polys, *s, seed <= 60);
+    pairs += visibility_graph(*s).strict_pairs.size();
+  }
+  EXPECT_GE(pairs, 5000u);
+}
+
+TEST(RotationalVisibility2D, RandomTriangleScenesOnASmallGrid) {
+  for (std::uint64_t seed = 1; seed <= 150; ++seed) {
+    const auto polys = random_triangle_scene(seed, 2 + seed % 5);
+    const auto s = try_scene(polys);
+    ASSERT_TRUE(s.has_value());
+    SCOPED_TRACE("triangle seed " + std::to_string(seed));
+    expect_same(polys, *s, true);
+  }
+}
+
+TEST(RotationalVisibility2D, FramedScenesMatchPerVertexSweep) {
+  // with a frame (no ray reaches infinity) and without
+  for (std::uint64_t seed = 1; seed <= 40; ++seed) {
+    const auto polys = seed % 2 ? random_box_scene(seed, 5) : oracle2d::random_grid_scene(seed, 2);
+    const auto s = try_scene(polys);
+    if (!s) continue;
+    const Scene2D framed = with_frame(*s, 0.25);
+    auto with_box = polys;
+    with_box.push_back(frame_polygon(framed));
+    SCOPED_TRACE("framed seed " + std::to_string(seed));
+    const auto fast = visibility_graph(framed, nullptr, VisibilityGraphMethod::RotationalSweep);
+    const auto ref = visibility_graph(framed, nullptr, VisibilityGraphMethod::PerVertexSweep);
+    EXPECT_EQ(fast.strict_pairs, ref.strict_pairs);
+    ASSERT_EQ(fast.bitangents.size(), ref.bitangents.size());
+    for (std::size_t i = 0; i < fast.bitangents.size(); ++i)
+      EXPECT_EQ(describe(framed, fast.bitangents[i]), describe(framed, ref.bitangents[i]));
+  }
+}
+
+TEST(RotationalVisibility2D, ComplexIsTheSameWithEitherConstruction) {
+  for (std::uint64_t seed = 3; seed <= 30; ++seed) {
+    const auto s = try_scene(oracle2d::random_grid_scene(seed, 2));
+    if (!s) continue;
+    const auto a = visibility_complex(*s, nullptr, VisibilityGraphMethod::RotationalSweep);
+    const auto b = visibility_complex(*s, nullptr, VisibilityGraphMethod::PerVertexSweep);
+    EXPECT_EQ(a.edges.size(), b.edges.size());
+    EXPECT_EQ(a.faces.size(), b.faces.size());
+    EXPECT_EQ(a.gluing_consistent, b.gluing_consistent);
+    for (std::size_t i = 0; i < std::min(a.vertices.size(), b.vertices.size()); ++i) {
+      EXPECT_EQ(a.vertices[i].edges, b.vertices[i].edges);
+      EXPECT_EQ(a.vertices[i].faces, b.vertices[i].faces);
+    }
+  }
+}
