@@ -1,6 +1,7 @@
 // bench_complex2d: 2D visibility complex construction time vs n and vs k, and visibility-polygon queries
 // per second (our exact angular sweep vs CGAL's Triangular_expansion_visibility_2) on the same scenes.
-// Usage: bench_complex2d [--max-n N] [--queries Q]. Prints tables (docs/performance.md).
+// Usage: bench_complex2d [--max-n N] [--max-old N] [--queries Q] (--max-old: largest n for the per-vertex
+// sweep). Prints tables (docs/performance.md).
 #include "skeleton/visibility_complex_2d.hpp"
 #include "skeleton/visibility_polygon_2d.hpp"
 
@@ -94,32 +95,55 @@ double cgal_tev_queries_per_second(const Scene2D& framed, const std::vector<Poin
 }  // namespace
 
 int main(int argc, char** argv) {
-  int max_n = 4096, queries = 200;
+  int max_n = 4096, max_old = 4096, queries = 200;
   for (int i = 1; i + 1 < argc; i += 2) {
     if (!std::strcmp(argv[i], "--max-n")) max_n = std::atoi(argv[i + 1]);
+    else if (!std::strcmp(argv[i], "--max-old")) max_old = std::atoi(argv[i + 1]);
     else if (!std::strcmp(argv[i], "--queries")) queries = std::atoi(argv[i + 1]);
   }
-  std::printf("# 1. complex construction vs n (grid layout, 8-gons)\n");
-  std::printf("%8s %8s %10s %10s %10s %14s %12s\n", "n", "k", "edges", "faces", "seconds", "s/(n^2 log n)", "us/bitangent");
-  for (int polygons = 16; polygons * 8 <= max_n; polygons *= 2) {
-    const Scene2D s = make_scene("grid", polygons, 8, polygons);
+  // Visible pairs by either method (the complex's vertices are the bitangents among them).
+  auto time_graph = [](const Scene2D& s, VisibilityGraphMethod m, std::size_t* pairs, std::size_t* bitangents) {
     const double t0 = now();
-    const auto cx = visibility_complex(s);
+    const auto g = visibility_graph(s, nullptr, m);
     const double t = now() - t0;
-    const double n = s.num_vertices();
-    std::printf("%8d %8zu %10zu %10zu %10.3f %14.3e %12.2f\n", s.num_vertices(), cx.graph.bitangents.size(),
-                cx.edges.size(), cx.faces.size(), t, t / (n * n * std::log2(n)), 1e6 * t / std::max<std::size_t>(1, cx.graph.bitangents.size()));
-    std::fflush(stdout);
+    *pairs = g.strict_pairs.size();
+    *bitangents = g.bitangents.size();
+    return t;
+  };
+  std::printf("# 1. construction vs n at fixed density (8-gons; grid: open space; row: a corridor of polygons)\n");
+  std::printf("#    old = one angular sweep per vertex (2 threads), new = one rotational sweep (1 thread)\n");
+  std::printf("%6s %7s %9s %8s %10s %10s %8s %12s %12s %11s\n", "layout", "n", "pairs K", "k", "old s", "new s",
+              "old/new", "new us/(K+n)", "old s/n^2lgn", "complex s");
+  for (const char* layout : {"grid", "row"}) {
+    for (int polygons = 16; polygons * 8 <= max_n; polygons *= 2) {
+      const Scene2D s = make_scene(layout, polygons, 8, polygons);
+      std::size_t pairs = 0, k = 0, pairs2 = 0, k2 = 0;
+      const double n = s.num_vertices();
+      const bool run_old = polygons * 8 <= max_old;
+      const double told = run_old ? time_graph(s, VisibilityGraphMethod::PerVertexSweep, &pairs2, &k2) : 0;
+      const double tnew = time_graph(s, VisibilityGraphMethod::RotationalSweep, &pairs, &k);
+      if (run_old && (pairs != pairs2 || k != k2)) std::printf("MISMATCH old/new\n");
+      const double t0 = now();
+      const auto cx = visibility_complex(s);
+      const double tcx = now() - t0;
+      std::printf("%6s %7d %9zu %8zu %10.3f %10.3f %8.1f %12.2f %12.3e %11.3f\n", layout, s.num_vertices(), pairs, k,
+                  told, tnew, run_old ? told / tnew : 0.0, 1e6 * tnew / (pairs + n),
+                  told / (n * n * std::log2(n)), tcx);
+      std::fflush(stdout);
+    }
   }
-  std::printf("\n# 2. complex construction vs k at fixed n (layouts row / grid / ring, 64 8-gons, n = 512)\n");
-  std::printf("%8s %8s %8s %10s %12s\n", "layout", "n", "k", "seconds", "us/bitangent");
+  std::printf("\n# 2. construction vs k at fixed n (256 8-gons, n = 2048): corridor (row) / grid / ring\n");
+  std::printf("%8s %8s %9s %8s %10s %10s %8s %12s\n", "layout", "n", "pairs K", "k", "old s", "new s", "old/new",
+              "new us/(K+n)");
   for (const char* layout : {"row", "grid", "ring"}) {
-    const Scene2D s = make_scene(layout, 64, 8, 7);
-    const double t0 = now();
-    const auto cx = visibility_complex(s);
-    const double t = now() - t0;
-    std::printf("%8s %8d %8zu %10.3f %12.2f\n", layout, s.num_vertices(), cx.graph.bitangents.size(), t,
-                1e6 * t / std::max<std::size_t>(1, cx.graph.bitangents.size()));
+    const Scene2D s = make_scene(layout, 256, 8, 7);
+    std::size_t pairs = 0, k = 0, pairs2 = 0, k2 = 0;
+    const bool run_old = s.num_vertices() <= max_old;
+    const double told = run_old ? time_graph(s, VisibilityGraphMethod::PerVertexSweep, &pairs2, &k2) : 0;
+    const double tnew = time_graph(s, VisibilityGraphMethod::RotationalSweep, &pairs, &k);
+    if (run_old && (pairs != pairs2 || k != k2)) std::printf("MISMATCH old/new\n");
+    std::printf("%8s %8d %9zu %8zu %10.3f %10.3f %8.1f %12.2f\n", layout, s.num_vertices(), pairs, k, told, tnew,
+                run_old ? told / tnew : 0.0, 1e6 * tnew / (pairs + s.num_vertices()));
     std::fflush(stdout);
   }
   std::printf("\n# 3. visibility polygon queries per second (grid layout, %d random free points)\n", queries);

@@ -9,25 +9,33 @@
 namespace exactvis {
 namespace {
 
-// A direction as the vector to - from (never zero).
+// A direction as the vector to - from (never zero), with its class in the sweep order over the angles
+// (0, 2pi]: 0 for (0, pi], 1 for (pi, 2pi), 2 for direction (1, 0), which comes last.
 struct Dir {
   const Point2* from = nullptr;
   const Point2* to = nullptr;
+  int cls = 0;
 };
 
-bool is_start_direction(const Dir& d) {  // direction (1, 0)
-  return dy_sign(*d.from, *d.to) == Sign::Zero && dx_sign(*d.from, *d.to) == Sign::Positive;
+Dir make_dir(const Point2& from, const Point2& to) {
+  const Sign sy = dy_sign(from, to);
+  int cls = 0;
+  if (sy == Sign::Negative) cls = 1;
+  else if (sy == Sign::Zero) cls = dx_sign(from, to) == Sign::Positive ? 2 : 0;
+  return {&from, &to, cls};
 }
 
-// Order of directions in the sweep, which runs over the angles (0, 2pi]: direction (1, 0) comes last.
+// -1, 0, +1: u before, with, after v in the sweep. Within one class the cross product decides.
 int sweep_compare(const Dir& u, const Dir& v) {
-  const bool su = is_start_direction(u), sv = is_start_direction(v);
-  if (su || sv) return su == sv ? 0 : (su ? 1 : -1);
-  return compare_angle(*u.from, *u.to, *v.from, *v.to);
+  if (u.cls != v.cls) return u.cls < v.cls ? -1 : 1;
+  if (u.cls == 2 || (u.from == v.from && u.to == v.to)) return 0;
+  const Sign s = cross_sign(*u.from, *u.to, *v.from, *v.to);
+  return s == Sign::Positive ? -1 : (s == Sign::Negative ? 1 : 0);
 }
 
-// Vertex p is on the ray from... : q - p has direction d.
+// q - p has the direction d.
 bool same_direction(const Dir& d, const Point2& p, const Point2& q) {
+  if (d.from == &p && d.to == &q) return true;
   return cross_sign(*d.from, *d.to, p, q) == Sign::Zero && dot_sign(*d.from, *d.to, p, q) == Sign::Positive;
 }
 
@@ -43,7 +51,8 @@ struct ViewerLess {
   bool operator()(int p, int q) const {
     if (p == q) return false;
     const Point2 &a = (*P)[p], &b = (*P)[q];
-    const Sign c = cross_sign(*d->from, *d->to, b, a);  // cross(d, a - b)
+    const bool on_d = (&a == d->from && &b == d->to) || (&a == d->to && &b == d->from);
+    const Sign c = on_d ? Sign::Zero : cross_sign(*d->from, *d->to, b, a);  // cross(d, a - b)
     if (c != Sign::Zero) return c == Sign::Negative;
     return dot_sign(*d->from, *d->to, b, a) == Sign::Positive;
   }
@@ -146,8 +155,10 @@ struct Sweep {
   struct Entry {
     Dir d;
     int v;
-    int version;
+    int version;  // -1: ray query number v
   };
+  const std::vector<RayQuery2D>* queries = nullptr;
+  std::vector<SegmentEnd2D> answers;
   struct Later {
     bool operator()(const Entry& x, const Entry& y) const { return sweep_compare(x.d, y.d) > 0; }
   };
@@ -163,7 +174,7 @@ struct Sweep {
     Dir best;
     bool have = false;
     auto consider = [&](int to) {
-      const Dir d{&P[v], &P[to]};
+      const Dir d = make_dir(P[v], P[to]);
       if (started && sweep_compare(d, cur) <= 0) return;  // wraps past the end of the turn
       if (!have || sweep_compare(d, best) < 0) best = d, have = true;
     };
@@ -207,7 +218,7 @@ struct Sweep {
   std::vector<std::vector<VisibleFrom2D>> run(void (*progress)(double)) {
     std::vector<std::vector<VisibleFrom2D>> found(n);
     static const Point2 origin(0.0, 0.0), unit_x(1.0, 0.0);
-    cur = {&origin, &unit_x};
+    cur = make_dir(origin, unit_x);
     view.assign(n, -1);
     version.assign(n, 0);
     std::vector<char> own(n, 0);
@@ -220,7 +231,13 @@ struct Sweep {
     where.resize(n);
     for (int v = 0; v < n; ++v) insert(v);
     for (int v = 0; v < n; ++v) schedule(v);
+    if (queries) {
+      answers.assign(queries->size(), {});
+      for (std::size_t i = 0; i < queries->size(); ++i)
+        heap.push({make_dir(*(*queries)[i].from, *(*queries)[i].to), static_cast<int>(i), -1});
+    }
     started = true;
+    std::vector<int> asked;
 
     std::vector<int> S;
     std::vector<Hit> hit(n);
@@ -231,14 +248,19 @@ struct Sweep {
       // all valid events at the next direction
       const Dir d = heap.top().d;
       S.clear();
+      asked.clear();
       while (!heap.empty() && sweep_compare(heap.top().d, d) == 0) {
         const Entry e = heap.top();
         heap.pop();
+        if (e.version < 0) {
+          asked.push_back(e.v);
+          continue;
+        }
         if (e.version != version[e.v] || in_S[e.v]) continue;
         in_S[e.v] = 1;
         S.push_back(e.v);
       }
-      if (S.empty()) continue;
+      if (S.empty() && asked.empty()) continue;
       // 1. what each ray meets first at exactly d, from the state at d- (lists not yet changed)
       for (int p : S) {
         Hit h;
@@ -258,6 +280,18 @@ struct Sweep {
         }
         if (h.kind == Hit::None) throw std::logic_error("rotational_visible_pairs: empty event (bug)");
         hit[p] = h;
+      }
+      // ray queries: the first contact at exactly d (state at d-, events at d)
+      for (int i : asked) {
+        const int v = (*queries)[i].vertex;
+        SegmentEnd2D& a = answers[i];
+        if (in_S[v] && hit[v].kind != Hit::None) {
+          a = {SegmentEnd2D::Vertex, hit[v].q, s.object_of(hit[v].q), {}};
+        } else if (view[v] >= 0) {
+          a = {SegmentEnd2D::EdgeInterior, view[v], s.object_of(view[v]), {}};
+        } else if (view[v] == kOwn) {
+          throw std::logic_error("rotational_first_contacts: ray inside its own object");
+        }
       }
       // 2. the strict pairs, with the maximal free segment's end beyond w for tangent ones
       for (int p : S) {
@@ -319,6 +353,13 @@ struct Sweep {
 std::vector<std::vector<VisibleFrom2D>> rotational_visible_pairs(const Scene2D& scene, void (*progress)(double)) {
   Sweep sweep(scene);
   return sweep.run(progress);
+}
+
+std::vector<SegmentEnd2D> rotational_first_contacts(const Scene2D& scene, const std::vector<RayQuery2D>& queries) {
+  Sweep sweep(scene);
+  sweep.queries = &queries;
+  sweep.run(nullptr);
+  return std::move(sweep.answers);
 }
 
 }  // namespace exactvis

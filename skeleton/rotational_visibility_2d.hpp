@@ -24,4 +24,17 @@ namespace exactvis {
 std::vector<std::vector<VisibleFrom2D>> rotational_visible_pairs(const Scene2D& scene,
                                                                  void (*progress)(double) = nullptr);
 
+// A ray from scene vertex `vertex` in direction `to - from` (points outside the scene; they must stay
+// alive during the call). The direction must not run along an edge of the vertex.
+struct RayQuery2D {
+  int vertex = 0;
+  const Point2* from = nullptr;
+  const Point2* to = nullptr;
+};
+
+// The first boundary point met by each ray (as first_contact in visibility_complex_2d.hpp, without the
+// contact point: kind, id and object only), all answered by one rotational sweep: O((n + k + m) log n)
+// for m queries instead of O(n) per ray.
+std::vector<SegmentEnd2D> rotational_first_contacts(const Scene2D& scene, const std::vector<RayQuery2D>& queries);
+
 }  // namespace exactvis

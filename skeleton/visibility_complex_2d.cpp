@@ -1,5 +1,7 @@
 #include "skeleton/visibility_complex_2d.hpp"
 
+#include "skeleton/rotational_visibility_2d.hpp"
+
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
@@ -197,15 +199,34 @@ VisibilityComplex2D visibility_complex(const Scene2D& s, void (*progress)(double
       }
     }
   }
-  // end objects of each edge's sample line: two exact ray shots, in parallel
-  tbb::parallel_for(std::size_t(0), cx.edges.size(), [&](std::size_t j) {
-    ComplexEdge2D& edge = cx.edges[j];
-    if (edge.degenerate) return;
-    const Point2 back(edge.sample_from.x + edge.sample_from.x - edge.sample_to.x,
-                      edge.sample_from.y + edge.sample_from.y - edge.sample_to.y);
-    edge.end_objects = {first_contact(s, edge.pivot, edge.sample_from, back).object,
-                        first_contact(s, edge.pivot, edge.sample_from, edge.sample_to).object};
-  });
+  // end objects of each edge's sample line, backwards and forwards: with the rotational method all rays
+  // are answered by one more sweep, O((n + k + edges) log n); otherwise two exact O(n) ray shots per edge.
+  if (method == VisibilityGraphMethod::RotationalSweep) {
+    std::vector<Point2> backs(cx.edges.size());
+    std::vector<RayQuery2D> queries;
+    std::vector<std::size_t> asked;
+    for (std::size_t j = 0; j < cx.edges.size(); ++j) {
+      const ComplexEdge2D& edge = cx.edges[j];
+      if (edge.degenerate) continue;
+      backs[j] = Point2(edge.sample_from.x + edge.sample_from.x - edge.sample_to.x,
+                        edge.sample_from.y + edge.sample_from.y - edge.sample_to.y);
+      queries.push_back({edge.pivot, &edge.sample_from, &backs[j]});
+      queries.push_back({edge.pivot, &edge.sample_from, &edge.sample_to});
+      asked.push_back(j);
+    }
+    const std::vector<SegmentEnd2D> ends = rotational_first_contacts(s, queries);
+    for (std::size_t i = 0; i < asked.size(); ++i)
+      cx.edges[asked[i]].end_objects = {ends[2 * i].object, ends[2 * i + 1].object};
+  } else {
+    tbb::parallel_for(std::size_t(0), cx.edges.size(), [&](std::size_t j) {
+      ComplexEdge2D& edge = cx.edges[j];
+      if (edge.degenerate) return;
+      const Point2 back(edge.sample_from.x + edge.sample_from.x - edge.sample_to.x,
+                        edge.sample_from.y + edge.sample_from.y - edge.sample_to.y);
+      edge.end_objects = {first_contact(s, edge.pivot, edge.sample_from, back).object,
+                          first_contact(s, edge.pivot, edge.sample_from, edge.sample_to).object};
+    });
+  }
   // faces: union-find over vertex slots (6 each) and edge slots (3 each)
   UnionFind uf;
   std::vector<std::array<int, 6>> vslot(B.size());

@@ -239,9 +239,10 @@ TEST(RotationalVisibility2D, FramedScenesMatchPerVertexSweep) {
 }
 
 TEST(RotationalVisibility2D, ComplexIsTheSameWithEitherConstruction) {
-  for (std::uint64_t seed = 3; seed <= 30; ++seed) {
-    const auto s = try_scene(oracle2d::random_grid_scene(seed, 2));
+  for (std::uint64_t seed = 3; seed <= 60; ++seed) {
+    const auto s = try_scene(seed % 2 ? oracle2d::random_grid_scene(seed, 2) : random_box_scene(seed, 5));
     if (!s) continue;
+    SCOPED_TRACE("seed " + std::to_string(seed));
     const auto a = visibility_complex(*s, nullptr, VisibilityGraphMethod::RotationalSweep);
     const auto b = visibility_complex(*s, nullptr, VisibilityGraphMethod::PerVertexSweep);
     EXPECT_EQ(a.edges.size(), b.edges.size());
@@ -251,5 +252,43 @@ TEST(RotationalVisibility2D, ComplexIsTheSameWithEitherConstruction) {
       EXPECT_EQ(a.vertices[i].edges, b.vertices[i].edges);
       EXPECT_EQ(a.vertices[i].faces, b.vertices[i].faces);
     }
+    // end objects of the edges: one sweep with ray queries vs two O(n) ray shots per edge
+    for (std::size_t j = 0; j < std::min(a.edges.size(), b.edges.size()); ++j)
+      EXPECT_EQ(a.edges[j].end_objects, b.edges[j].end_objects) << "edge " << j;
   }
+}
+
+TEST(RotationalVisibility2D, RayQueriesMatchRayShots) {
+  // rays from every vertex towards every other vertex and towards points between them, on degenerate
+  // grid scenes: the sweep's first contact equals first_contact's (vertex or edge, same id)
+  std::size_t checked = 0;
+  for (std::uint64_t seed = 1; seed <= 40; ++seed) {
+    const auto polys = seed % 2 ? random_box_scene(seed, 4) : random_triangle_scene(seed, 4);
+    const auto s = try_scene(polys);
+    if (!s) continue;
+    const auto& P = s->points;
+    std::vector<Point2> targets;
+    targets.reserve(P.size() * P.size() * 2);
+    std::vector<RayQuery2D> qs;
+    for (int v = 0; v < s->num_vertices(); ++v)
+      for (int u = 0; u < s->num_vertices(); ++u) {
+        if (u == v) continue;
+        for (int half = 0; half < 2; ++half) {
+          // towards u, and towards the midpoint of u and next(u)
+          const Point2& t = half ? Point2((P[u].x + P[s->next[u]].x) / 2, (P[u].y + P[s->next[u]].y) / 2) : P[u];
+          if (!in_free_wedge(*s, v, P[v], t)) continue;
+          targets.push_back(t);
+          qs.push_back({v, &P[v], &targets.back()});
+        }
+      }
+    const auto got = rotational_first_contacts(*s, qs);
+    for (std::size_t i = 0; i < qs.size(); ++i) {
+      const SegmentEnd2D want = first_contact(*s, qs[i].vertex, *qs[i].from, *qs[i].to);
+      ASSERT_EQ(got[i].kind, want.kind) << "seed " << seed << " query " << i;
+      ASSERT_EQ(got[i].id, want.id) << "seed " << seed << " query " << i;
+      ASSERT_EQ(got[i].object, want.object);
+      ++checked;
+    }
+  }
+  EXPECT_GE(checked, 5000u);
 }
