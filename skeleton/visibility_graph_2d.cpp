@@ -7,7 +7,6 @@
 
 #include <algorithm>
 #include <atomic>
-#include <map>
 #include <stdexcept>
 
 namespace exactvis {
@@ -81,20 +80,28 @@ VisibilityGraph2D visibility_graph(const Scene2D& s, void (*progress)(double), V
   }
   VisibilityGraph2D g;
   for (int v = 0; v < n; ++v) g.ring_edges.emplace_back(v, s.next[v]);
-  // extension beyond p as seen from q's sweep
-  std::vector<std::map<int, const Found*>> by_target(n);
-  for (int p = 0; p < n; ++p)
-    for (const Found& f : found[p]) by_target[p][f.w] = &f;
+  // each pair must be found from both ends, once; the extension beyond p comes from q's side
+  std::size_t entries = 0;
   for (int p = 0; p < n; ++p) {
-    std::vector<const Found*> fs;
-    for (const Found& f : found[p]) fs.push_back(&f);
-    std::sort(fs.begin(), fs.end(), [](const Found* x, const Found* y) { return x->w < y->w; });
-    for (const Found* f : fs) {
+    std::sort(found[p].begin(), found[p].end(), [](const Found& x, const Found& y) { return x.w < y.w; });
+    for (std::size_t i = 1; i < found[p].size(); ++i)
+      if (found[p][i].w == found[p][i - 1].w) throw std::logic_error("visibility_graph: pair found twice (bug)");
+    entries += found[p].size();
+  }
+  auto lookup = [&](int q, int p) -> const Found* {
+    const auto it = std::lower_bound(found[q].begin(), found[q].end(), p,
+                                     [](const Found& x, int w) { return x.w < w; });
+    return it != found[q].end() && it->w == p ? &*it : nullptr;
+  };
+  for (int p = 0; p < n; ++p) {
+    for (const Found& fr : found[p]) {
+      const Found* f = &fr;
       const int q = f->w;
       if (q < p) continue;
-      const auto back = by_target[q].find(p);
-      if (back == by_target[q].end() || back->second->tangent != f->tangent)
+      const Found* back_found = lookup(q, p);
+      if (!back_found || back_found->tangent != f->tangent)
         throw std::logic_error("visibility_graph: asymmetric visibility (bug)");
+      const Found* back_f = back_found;
       g.strict_pairs.emplace_back(p, q);
       if (!f->tangent) continue;
       Bitangent2D b;
@@ -104,11 +111,12 @@ VisibilityGraph2D visibility_graph(const Scene2D& s, void (*progress)(double), V
       b.object_b = s.object_of(q);
       b.side_a = side_at(s, p, p, q);
       b.side_b = side_at(s, q, p, q);
-      b.end_a = back->second->beyond;
+      b.end_a = back_f->beyond;
       b.end_b = f->beyond;
       g.bitangents.push_back(std::move(b));
     }
   }
+  if (entries != 2 * g.strict_pairs.size()) throw std::logic_error("visibility_graph: asymmetric visibility (bug)");
   return g;
 }
 

@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 #include <set>
 #include <tuple>
@@ -291,4 +292,33 @@ TEST(RotationalVisibility2D, RayQueriesMatchRayShots) {
     }
   }
   EXPECT_GE(checked, 5000u);
+}
+
+TEST(RotationalVisibility2D, LargerScenesInGeneralPositionMatchPerVertexSweep) {
+  // jittered convex polygons with double coordinates (no exact degeneracy), up to a few hundred vertices
+  for (std::uint64_t seed = 1; seed <= 6; ++seed) {
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> u(0, 1);
+    std::vector<PolygonInput2D> polys;
+    const int m = 3 + static_cast<int>(seed);
+    for (int i = 0; i < m * m; ++i) {
+      PolygonInput2D p;
+      p.rings.emplace_back();
+      const int k = 3 + static_cast<int>(u(rng) * 6);
+      const double cx = 10.0 * (i % m) + u(rng), cy = 10.0 * (i / m) + u(rng), r = 2.0 + 2.5 * u(rng);
+      for (int t = 0; t < k; ++t) {
+        const double a = 6.283185307179586 * (t + 0.8 * u(rng)) / k;
+        p.rings[0].emplace_back(cx + r * std::cos(a), cy + r * std::sin(a));
+      }
+      polys.push_back(std::move(p));
+    }
+    const Scene2D s = make_scene2d(polys);
+    SCOPED_TRACE("seed " + std::to_string(seed) + ", n = " + std::to_string(s.num_vertices()));
+    const auto fast = visibility_graph(s, nullptr, VisibilityGraphMethod::RotationalSweep);
+    const auto ref = visibility_graph(s, nullptr, VisibilityGraphMethod::PerVertexSweep);
+    EXPECT_EQ(fast.strict_pairs, ref.strict_pairs);
+    ASSERT_EQ(fast.bitangents.size(), ref.bitangents.size());
+    for (std::size_t i = 0; i < fast.bitangents.size(); ++i)
+      EXPECT_EQ(describe(s, fast.bitangents[i]), describe(s, ref.bitangents[i]));
+  }
 }
