@@ -6,22 +6,32 @@
 #include <set>
 #include <stdexcept>
 
+#include <tbb/parallel_invoke.h>
+
 namespace exactvis {
 namespace {
 
-// A direction as the vector to - from (never zero), with its class in the sweep order over the angles
-// (0, 2pi]: 0 for (0, pi], 1 for (pi, 2pi), 2 for direction (1, 0), which comes last.
+// A direction as the vector to - from (never zero), with its class in the order of a sweep that starts
+// just after direction (1, 0) (half 0) or (-1, 0) (half 1): class 0 for the first half-turn (0, pi]
+// (resp. (pi, 2pi]), class 1 for the open second half-turn, class 2 for the start direction itself, which
+// comes last. Within a class, the cross product orders the directions.
 struct Dir {
   const Point2* from = nullptr;
   const Point2* to = nullptr;
   int cls = 0;
 };
 
-Dir make_dir(const Point2& from, const Point2& to) {
-  const Sign sy = dy_sign(from, to);
+Dir make_dir(const Point2& from, const Point2& to, int half) {
+  Sign sy = dy_sign(from, to);
+  if (half) sy = -sy;
   int cls = 0;
-  if (sy == Sign::Negative) cls = 1;
-  else if (sy == Sign::Zero) cls = dx_sign(from, to) == Sign::Positive ? 2 : 0;
+  if (sy == Sign::Negative) {
+    cls = 1;
+  } else if (sy == Sign::Zero) {
+    Sign sx = dx_sign(from, to);
+    if (half) sx = -sx;
+    cls = sx == Sign::Positive ? 2 : 0;
+  }
   return {&from, &to, cls};
 }
 
@@ -59,17 +69,21 @@ struct ViewerLess {
 };
 
 // Views at the start direction (1, 0)+ = (1, eps): a plane sweep across the rays, in the order of the
-// offset k(v) = y - eps x, keeping the edges crossed by the current ray ordered along it.
+// offset k(v) = y - eps x, keeping the edges crossed by the current ray ordered along it. For the start
+// direction (-1, 0)+ the same sweep runs on the scene turned by pi (p -> -p), which keeps every
+// orientation and reverses the offset order.
 struct StartQuery {
   int v;
 };
 
 struct StartSweep {
   const Scene2D& s;
+  bool turned = false;      // start direction (-1, 0) instead of (1, 0)
   std::vector<int> lo, hi;  // per edge: endpoint with the smaller / larger offset
 
-  // u before v in the offset order: y ascending, then x descending.
+  // u before v in the offset order: y ascending, then x descending (for the turned scene: reversed).
   bool offset_less(int u, int v) const {
+    if (turned) std::swap(u, v);
     const Sign sy = dy_sign(s.points[u], s.points[v]);
     if (sy != Sign::Zero) return sy == Sign::Positive;
     return dx_sign(s.points[u], s.points[v]) == Sign::Negative;
@@ -145,6 +159,7 @@ struct Sweep {
   const Scene2D& s;
   const std::vector<Point2>& P;
   int n;
+  int half = 0;            // this sweep covers the directions (0, pi] (half 0) or (pi, 2pi] (half 1)
   Dir cur;                 // current direction; the lists are ordered for cur+
   bool started = false;    // false before the first event: every candidate lies ahead
   std::vector<int> view;   // kOwn, -1 (infinity) or edge id; the state at cur+
@@ -159,6 +174,7 @@ struct Sweep {
   };
   const std::vector<RayQuery2D>* queries = nullptr;
   std::vector<SegmentEnd2D> answers;
+  std::vector<char> answered;
   struct Later {
     bool operator()(const Entry& x, const Entry& y) const { return sweep_compare(x.d, y.d) > 0; }
   };
@@ -174,7 +190,7 @@ struct Sweep {
     Dir best;
     bool have = false;
     auto consider = [&](int to) {
-      const Dir d = make_dir(P[v], P[to]);
+      const Dir d = make_dir(P[v], P[to], half);
       if (started && sweep_compare(d, cur) <= 0) return;  // wraps past the end of the turn
       if (!have || sweep_compare(d, best) < 0) best = d, have = true;
     };
@@ -217,8 +233,8 @@ struct Sweep {
 
   std::vector<std::vector<VisibleFrom2D>> run(void (*progress)(double)) {
     std::vector<std::vector<VisibleFrom2D>> found(n);
-    static const Point2 origin(0.0, 0.0), unit_x(1.0, 0.0);
-    cur = make_dir(origin, unit_x);
+    static const Point2 origin(0.0, 0.0), unit_x(1.0, 0.0), minus_x(-1.0, 0.0);
+    cur = make_dir(origin, half ? minus_x : unit_x, half);
     view.assign(n, -1);
     version.assign(n, 0);
     std::vector<char> own(n, 0);
@@ -226,15 +242,16 @@ struct Sweep {
       own[v] = after_in_sector(cur, P[v], P[s.next[v]], P[v], P[s.prev[v]]);
       if (own[v]) view[v] = kOwn;
     }
-    StartSweep{s, {}, {}}.run(view, own);
+    StartSweep{s, half == 1, {}, {}}.run(view, own);
     lists.assign(n + 1, std::set<int, ViewerLess>(ViewerLess{&P, &cur}));
     where.resize(n);
     for (int v = 0; v < n; ++v) insert(v);
     for (int v = 0; v < n; ++v) schedule(v);
     if (queries) {
       answers.assign(queries->size(), {});
+      answered.assign(queries->size(), 0);
       for (std::size_t i = 0; i < queries->size(); ++i)
-        heap.push({make_dir(*(*queries)[i].from, *(*queries)[i].to), static_cast<int>(i), -1});
+        heap.push({make_dir(*(*queries)[i].from, *(*queries)[i].to, half), static_cast<int>(i), -1});
     }
     started = true;
     std::vector<int> asked;
@@ -244,7 +261,7 @@ struct Sweep {
     std::vector<char> in_S(n, 0);
     std::vector<int> touched;
     std::size_t steps = 0;
-    while (!heap.empty()) {
+    while (!heap.empty() && heap.top().d.cls == 0) {  // this sweep's half-turn only
       // all valid events at the next direction
       const Dir d = heap.top().d;
       S.clear();
@@ -285,6 +302,7 @@ struct Sweep {
       for (int i : asked) {
         const int v = (*queries)[i].vertex;
         SegmentEnd2D& a = answers[i];
+        answered[i] = 1;
         if (in_S[v] && hit[v].kind != Hit::None) {
           a = {SegmentEnd2D::Vertex, hit[v].q, s.object_of(hit[v].q), {}};
         } else if (view[v] >= 0) {
@@ -340,7 +358,7 @@ struct Sweep {
       for (int v : touched) schedule(v);
       if (progress && (++steps % 4096 == 0)) {
         const double a = std::atan2(d.to->ay - d.from->ay, d.to->ax - d.from->ax);
-        progress((a < 0 ? a + 6.283185307179586 : a) / 6.283185307179586);
+        progress(std::clamp((a < 0 ? a + 6.283185307179586 : a) / 3.141592653589793 - half, 0.0, 1.0));
       }
     }
     if (progress) progress(1.0);
@@ -350,16 +368,30 @@ struct Sweep {
 
 }  // namespace
 
+// The turn is cut into the half-turns (0, pi] and (pi, 2pi], swept in parallel from their own start
+// views; every direction belongs to exactly one of them, so each strict pair is still found once from
+// each end and each query is answered once.
 std::vector<std::vector<VisibleFrom2D>> rotational_visible_pairs(const Scene2D& scene, void (*progress)(double)) {
-  Sweep sweep(scene);
-  return sweep.run(progress);
+  Sweep first(scene), second(scene);
+  first.half = 0;
+  second.half = 1;
+  std::vector<std::vector<VisibleFrom2D>> a, b;
+  tbb::parallel_invoke([&] { a = first.run(progress); }, [&] { b = second.run(nullptr); });
+  for (std::size_t v = 0; v < a.size(); ++v) a[v].insert(a[v].end(), b[v].begin(), b[v].end());
+  return a;
 }
 
 std::vector<SegmentEnd2D> rotational_first_contacts(const Scene2D& scene, const std::vector<RayQuery2D>& queries) {
-  Sweep sweep(scene);
-  sweep.queries = &queries;
-  sweep.run(nullptr);
-  return std::move(sweep.answers);
+  Sweep first(scene), second(scene);
+  first.half = 0;
+  second.half = 1;
+  first.queries = second.queries = &queries;
+  tbb::parallel_invoke([&] { first.run(nullptr); }, [&] { second.run(nullptr); });
+  // each query was answered by the sweep of its half-turn
+  std::vector<SegmentEnd2D> out(queries.size());
+  for (std::size_t i = 0; i < queries.size(); ++i)
+    out[i] = first.answered[i] ? first.answers[i] : second.answers[i];
+  return out;
 }
 
 }  // namespace exactvis

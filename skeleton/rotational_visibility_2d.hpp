@@ -20,7 +20,8 @@ namespace exactvis {
 // Input: a scene (a frame, if present, takes part like any ring). Output: for every vertex p, the
 // vertices w it sees strictly (open segment p-w in the open free space), each once, with the tangency
 // flag and, for tangent pairs, the end of the maximal free segment beyond w (visibility_graph_2d.hpp).
-// Sequential; `progress` (may be null) gets the swept fraction of the full turn.
+// The two half-turns of directions run in parallel (two threads); `progress` (may be null) gets the swept
+// fraction of the first half-turn.
 std::vector<std::vector<VisibleFrom2D>> rotational_visible_pairs(const Scene2D& scene,
                                                                  void (*progress)(double) = nullptr);
 
