@@ -111,7 +111,7 @@ int main(int argc, char** argv) {
     return t;
   };
   std::printf("# 1. construction vs n at fixed density (8-gons; grid: open space; row: a corridor of polygons)\n");
-  std::printf("#    old = one angular sweep per vertex (2 threads), new = one rotational sweep (1 thread)\n");
+  std::printf("#    old = one angular sweep per vertex (2 threads), new = one rotational sweep (2 threads: half-turns)\n");
   std::printf("%6s %7s %9s %8s %10s %10s %8s %12s %12s %11s\n", "layout", "n", "pairs K", "k", "old s", "new s",
               "old/new", "new us/(K+n)", "old s/n^2lgn", "complex s");
   for (const char* layout : {"grid", "row"}) {
