@@ -78,15 +78,16 @@ struct StartQuery {
 
 struct StartSweep {
   const Scene2D& s;
+  const std::vector<Point2>& P;  // scene vertices, then free points (ids >= s.num_vertices())
   bool turned = false;      // start direction (-1, 0) instead of (1, 0)
   std::vector<int> lo, hi;  // per edge: endpoint with the smaller / larger offset
 
   // u before v in the offset order: y ascending, then x descending (for the turned scene: reversed).
   bool offset_less(int u, int v) const {
     if (turned) std::swap(u, v);
-    const Sign sy = dy_sign(s.points[u], s.points[v]);
+    const Sign sy = dy_sign(P[u], P[v]);
     if (sy != Sign::Zero) return sy == Sign::Positive;
-    return dx_sign(s.points[u], s.points[v]) == Sign::Negative;
+    return dx_sign(P[u], P[v]) == Sign::Negative;
   }
 
   struct Less {
@@ -96,7 +97,7 @@ struct StartSweep {
     // lo to hi is its right side.
     bool operator()(int e1, int e2) const {
       if (e1 == e2) return false;
-      const auto& P = sw->s.points;
+      const auto& P = sw->P;
       const Point2 &a1 = P[sw->lo[e1]], &b1 = P[sw->hi[e1]], &a2 = P[sw->lo[e2]], &b2 = P[sw->hi[e2]];
       const Sign o1 = orientation2(a1, b1, a2), o2 = orientation2(a1, b1, b2);
       if (o1 != Sign::Positive && o2 != Sign::Positive) return true;    // e2 ahead of line(e1)
@@ -106,21 +107,22 @@ struct StartSweep {
     }
     // edge before the query vertex: the vertex lies ahead of it
     bool operator()(int e, StartQuery q) const {
-      const auto& P = sw->s.points;
+      const auto& P = sw->P;
       return orientation2(P[sw->lo[e]], P[sw->hi[e]], P[q.v]) == Sign::Negative;
     }
     bool operator()(StartQuery q, int e) const {
-      const auto& P = sw->s.points;
+      const auto& P = sw->P;
       return orientation2(P[sw->lo[e]], P[sw->hi[e]], P[q.v]) == Sign::Positive;
     }
   };
 
-  // view[v] for every vertex whose start ray is free (others keep their value): edge id or -1.
-  void run(std::vector<int>& view, const std::vector<char>& own) {
-    const int n = s.num_vertices();
+  // view[v] for every vertex whose start ray is free (others keep their value): edge id or -1. Free
+  // points that lie on a boundary or inside an object get bad[v] = 1.
+  void run(std::vector<int>& view, const std::vector<char>& own, std::vector<char>& bad) {
+    const int n = s.num_vertices(), N = static_cast<int>(P.size());
     lo.resize(n);
     hi.resize(n);
-    std::vector<std::vector<int>> starting(n), ending(n);
+    std::vector<std::vector<int>> starting(N), ending(N);
     for (int e = 0; e < n; ++e) {
       int a = e, b = s.next[e];
       if (offset_less(b, a)) std::swap(a, b);
@@ -129,9 +131,14 @@ struct StartSweep {
       starting[a].push_back(e);
       ending[b].push_back(e);
     }
-    std::vector<int> order(n);
-    for (int v = 0; v < n; ++v) order[v] = v;
+    std::vector<int> order(N);
+    for (int v = 0; v < N; ++v) order[v] = v;
     std::sort(order.begin(), order.end(), [&](int u, int v) { return offset_less(u, v); });
+    for (int i = 0; i + 1 < N; ++i)  // a free point on a scene vertex
+      if (P[order[i]] == P[order[i + 1]] && (order[i] >= n || order[i + 1] >= n)) {
+        if (order[i] >= n) bad[order[i]] = 1;
+        if (order[i + 1] >= n) bad[order[i + 1]] = 1;
+      }
     std::set<int, Less> status(Less{this});
     std::vector<std::set<int, Less>::iterator> where(n, status.end());
     for (int v : order) {
@@ -142,6 +149,9 @@ struct StartSweep {
       if (!own[v]) {
         const auto it = status.lower_bound(StartQuery{v});
         view[v] = it == status.end() ? -1 : *it;
+        // a free point sees the free side (right) of the first edge ahead, never its line
+        if (v >= n && (it == status.end() || orientation2(P[*it], P[s.next[*it]], P[v]) != Sign::Negative))
+          bad[v] = 1;
       }
       for (int e : starting[v]) where[e] = status.insert(e).first;
     }
@@ -157,8 +167,9 @@ bool after_in_sector(const Dir& d, const Point2& a0, const Point2& a1, const Poi
 
 struct Sweep {
   const Scene2D& s;
-  const std::vector<Point2>& P;
-  int n;
+  const std::vector<Point2>& P;  // scene vertices, then free points (visibility polygon queries)
+  int n;                         // scene vertices
+  int N;                         // scene vertices and free points
   int half = 0;            // this sweep covers the directions (0, pi] (half 0) or (pi, 2pi] (half 1)
   Dir cur;                 // current direction; the lists are ordered for cur+
   bool started = false;    // false before the first event: every candidate lies ahead
@@ -180,7 +191,13 @@ struct Sweep {
   };
   std::priority_queue<Entry, std::vector<Entry>, Later> heap;
 
-  explicit Sweep(const Scene2D& scene) : s(scene), P(scene.points), n(scene.num_vertices()) {}
+  bool report_pairs = true;  // false when free points take part (their passes are no pairs)
+  std::vector<char> bad;      // per free point: on a boundary or inside an object (from the start views)
+  std::vector<std::vector<Point2>> polygon;  // per free point: visibility polygon vertices of this half-turn
+  std::vector<std::vector<Point2>> polygon_front;  // ... those at direction (1, 0) (half 1), which come first
+
+  Sweep(const Scene2D& scene, const std::vector<Point2>& points)
+      : s(scene), P(points), n(scene.num_vertices()), N(static_cast<int>(points.size())) {}
 
   std::set<int, ViewerLess>& list_of(int v) { return lists[view[v] < 0 ? n : view[v]]; }
 
@@ -197,7 +214,7 @@ struct Sweep {
     if (view[v] == kOwn) {
       consider(s.prev[v]);  // the ray leaves the object along edge (v, prev v)
     } else {
-      consider(s.next[v]);  // the ray enters the object along edge (v, next v)
+      if (v < n) consider(s.next[v]);  // the ray enters the object along edge (v, next v)
       const auto it = std::next(where[v]);
       if (it != list_of(v).end()) consider(*it);  // the left neighbour: v's ray will pass it
       if (view[v] >= 0) {
@@ -215,6 +232,7 @@ struct Sweep {
 
   // New view of a ray of direction cur+ that passes vertex q on its left (q's view at cur+ is final).
   int pass(int q) const {
+    if (q >= n) return view[q];  // a free point blocks nothing
     const Point2& c = P[q];
     const int u1 = s.next[q], u2 = s.prev[q];
     const bool l1 = cross_sign(*cur.from, *cur.to, c, P[u1]) == Sign::Positive;
@@ -226,6 +244,26 @@ struct Sweep {
     return view[q];
   }
 
+  // The visible edge of free point p changes at direction d from edge e1 to e2: the polygon gets the two
+  // points of the ray hit on them (an endpoint on the ray exactly, else the exact intersection).
+  void record_polygon(int p, const Dir& d, int e1, int e2) {
+    if (e1 < 0 || e2 < 0) throw std::invalid_argument("visibility region is unbounded");
+    const Point2& q = P[p];
+    const Point2 r(q.x + (d.to->x - d.from->x), q.y + (d.to->y - d.from->y));
+    auto& out = half == 1 && d.cls == 0 && is_positive_x(d) ? polygon_front[p - n] : polygon[p - n];
+    for (const int e : {e1, e2}) {
+      const Point2 &a = P[e], &b = P[s.next[e]];
+      const Point2 h = orientation2(q, r, a) == Sign::Zero   ? a
+                       : orientation2(q, r, b) == Sign::Zero ? b
+                                                             : line_intersection(q, q, r, a, b);
+      if (out.empty() || out.back() != h) out.push_back(h);
+    }
+  }
+
+  static bool is_positive_x(const Dir& d) {
+    return dy_sign(*d.from, *d.to) == Sign::Zero && dx_sign(*d.from, *d.to) == Sign::Positive;
+  }
+
   struct Hit {
     enum Kind { None, EnterOwn, LeaveOwn, Vertex } kind = None;
     int q = -1;
@@ -233,20 +271,25 @@ struct Sweep {
 
   std::vector<std::vector<VisibleFrom2D>> run(void (*progress)(double)) {
     std::vector<std::vector<VisibleFrom2D>> found(n);
+    bad.assign(N, 0);
+    polygon.assign(N - n, {});
+    polygon_front.assign(N - n, {});
     static const Point2 origin(0.0, 0.0), unit_x(1.0, 0.0), minus_x(-1.0, 0.0);
     cur = make_dir(origin, half ? minus_x : unit_x, half);
-    view.assign(n, -1);
-    version.assign(n, 0);
-    std::vector<char> own(n, 0);
+    view.assign(N, -1);
+    version.assign(N, 0);
+    std::vector<char> own(N, 0);
     for (int v = 0; v < n; ++v) {
       own[v] = after_in_sector(cur, P[v], P[s.next[v]], P[v], P[s.prev[v]]);
       if (own[v]) view[v] = kOwn;
     }
-    StartSweep{s, half == 1, {}, {}}.run(view, own);
+    StartSweep{s, P, half == 1, {}, {}}.run(view, own, bad);
     lists.assign(n + 1, std::set<int, ViewerLess>(ViewerLess{&P, &cur}));
-    where.resize(n);
-    for (int v = 0; v < n; ++v) insert(v);
-    for (int v = 0; v < n; ++v) schedule(v);
+    for (int v = n; v < N; ++v)
+      if (bad[v]) throw std::invalid_argument("query point lies on a polygon boundary, inside an object or outside the frame");
+    where.resize(N);
+    for (int v = 0; v < N; ++v) insert(v);
+    for (int v = 0; v < N; ++v) schedule(v);
     if (queries) {
       answers.assign(queries->size(), {});
       answered.assign(queries->size(), 0);
@@ -257,8 +300,8 @@ struct Sweep {
     std::vector<int> asked;
 
     std::vector<int> S;
-    std::vector<Hit> hit(n);
-    std::vector<char> in_S(n, 0);
+    std::vector<Hit> hit(N);
+    std::vector<char> in_S(N, 0);
     std::vector<int> touched;
     std::size_t steps = 0;
     while (!heap.empty() && heap.top().d.cls == 0) {  // this sweep's half-turn only
@@ -283,7 +326,7 @@ struct Sweep {
         Hit h;
         if (view[p] == kOwn) {
           if (same_direction(d, P[p], P[s.prev[p]])) h = {Hit::LeaveOwn, s.prev[p]};
-        } else if (same_direction(d, P[p], P[s.next[p]])) {
+        } else if (p < n && same_direction(d, P[p], P[s.next[p]])) {
           h = {Hit::EnterOwn, s.next[p]};
         } else {
           const auto it = std::next(where[p]);
@@ -313,7 +356,7 @@ struct Sweep {
       }
       // 2. the strict pairs, with the maximal free segment's end beyond w for tangent ones
       for (int p : S) {
-        if (hit[p].kind != Hit::Vertex) continue;
+        if (!report_pairs || hit[p].kind != Hit::Vertex) continue;
         const int w = hit[p].q;
         if (!in_free_wedge(s, p, P[p], P[w]))
           throw std::logic_error("rotational_visible_pairs: visible vertex outside the free wedge (bug)");
@@ -349,7 +392,9 @@ struct Sweep {
       cur = d;
       std::sort(S.begin(), S.end(), [&](int a, int b) { return dot_sign(*d.from, *d.to, P[b], P[a]) == Sign::Positive; });
       for (int p : S) {
+        const int before = view[p];
         view[p] = hit[p].kind == Hit::EnterOwn ? kOwn : pass(hit[p].q);
+        if (p >= n && view[p] != before) record_polygon(p, d, before, view[p]);
         insert(p);
         if (view[p] != kOwn && where[p] != list_of(p).begin()) touched.push_back(*std::prev(where[p]));
       }
@@ -372,7 +417,7 @@ struct Sweep {
 // views; every direction belongs to exactly one of them, so each strict pair is still found once from
 // each end and each query is answered once.
 std::vector<std::vector<VisibleFrom2D>> rotational_visible_pairs(const Scene2D& scene, void (*progress)(double)) {
-  Sweep first(scene), second(scene);
+  Sweep first(scene, scene.points), second(scene, scene.points);
   first.half = 0;
   second.half = 1;
   std::vector<std::vector<VisibleFrom2D>> a, b;
@@ -382,7 +427,7 @@ std::vector<std::vector<VisibleFrom2D>> rotational_visible_pairs(const Scene2D& 
 }
 
 std::vector<SegmentEnd2D> rotational_first_contacts(const Scene2D& scene, const std::vector<RayQuery2D>& queries) {
-  Sweep first(scene), second(scene);
+  Sweep first(scene, scene.points), second(scene, scene.points);
   first.half = 0;
   second.half = 1;
   first.queries = second.queries = &queries;
@@ -391,6 +436,44 @@ std::vector<SegmentEnd2D> rotational_first_contacts(const Scene2D& scene, const 
   std::vector<SegmentEnd2D> out(queries.size());
   for (std::size_t i = 0; i < queries.size(); ++i)
     out[i] = first.answered[i] ? first.answers[i] : second.answers[i];
+  return out;
+}
+
+}  // namespace exactvis
+
+namespace exactvis {
+
+std::vector<std::vector<Point2>> rotational_visibility_polygons(const Scene2D& scene, const std::vector<Point2>& points) {
+  const int n = scene.num_vertices();
+  // distinct points only (equal free points would be equal in the viewer order)
+  std::vector<int> order(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) order[i] = static_cast<int>(i);
+  auto less = [&](int a, int b) {
+    const Sign sx = dx_sign(points[b], points[a]);
+    if (sx != Sign::Zero) return sx == Sign::Negative;
+    return dy_sign(points[b], points[a]) == Sign::Negative;
+  };
+  std::sort(order.begin(), order.end(), less);
+  std::vector<int> slot(points.size());
+  std::vector<Point2> all = scene.points;
+  for (std::size_t i = 0; i < order.size(); ++i) {
+    if (i == 0 || points[order[i]] != points[order[i - 1]]) all.push_back(points[order[i]]);
+    slot[order[i]] = static_cast<int>(all.size()) - 1 - n;
+  }
+  Sweep first(scene, all), second(scene, all);
+  first.half = 0;
+  second.half = 1;
+  first.report_pairs = second.report_pairs = false;
+  tbb::parallel_invoke([&] { first.run(nullptr); }, [&] { second.run(nullptr); });
+  std::vector<std::vector<Point2>> out(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const int k = slot[i];
+    auto& poly = out[i];
+    for (const auto* part : {&second.polygon_front[k], &first.polygon[k], &second.polygon[k]})
+      for (const Point2& p : *part)
+        if (poly.empty() || poly.back() != p) poly.push_back(p);
+    while (poly.size() > 1 && poly.back() == poly.front()) poly.pop_back();
+  }
   return out;
 }
 

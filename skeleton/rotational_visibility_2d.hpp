@@ -38,4 +38,11 @@ struct RayQuery2D {
 // for m queries instead of O(n) per ray.
 std::vector<SegmentEnd2D> rotational_first_contacts(const Scene2D& scene, const std::vector<RayQuery2D>& queries);
 
+// Visibility polygons of many free points at once (see visibility_polygons in visibility_polygon_2d.hpp):
+// the points take part in the sweep as viewers that block nothing; each one's polygon gets the two ray
+// hits wherever its viewed edge changes. Input: a scene with a frame. Throws std::invalid_argument if a
+// point lies on a boundary, inside an object or outside the frame. O((n + K + sum of output) log n).
+std::vector<std::vector<Point2>> rotational_visibility_polygons(const Scene2D& scene,
+                                                                const std::vector<Point2>& points);
+
 }  // namespace exactvis

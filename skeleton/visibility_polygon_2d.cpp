@@ -1,6 +1,7 @@
 #include "skeleton/visibility_polygon_2d.hpp"
 
 #include "skeleton/angular_sweep_2d.hpp"
+#include "skeleton/rotational_visibility_2d.hpp"
 
 #include <algorithm>
 #include <stdexcept>
@@ -38,6 +39,14 @@ VisibilityPolygon2D visibility_polygon(const Scene2D& scene, const Point2& q) {
   }
   while (vp.vertices.size() > 1 && vp.vertices.back() == vp.vertices.front()) vp.vertices.pop_back();
   return vp;
+}
+
+std::vector<VisibilityPolygon2D> visibility_polygons(const Scene2D& scene, const std::vector<Point2>& points) {
+  if (scene.frame_ring < 0) throw std::invalid_argument("visibility query needs a bounded scene (with_frame)");
+  auto rings = rotational_visibility_polygons(scene, points);
+  std::vector<VisibilityPolygon2D> out(rings.size());
+  for (std::size_t i = 0; i < rings.size(); ++i) out[i].vertices = std::move(rings[i]);
+  return out;
 }
 
 std::vector<int> visible_edges(const Scene2D& scene, const Point2& q) {

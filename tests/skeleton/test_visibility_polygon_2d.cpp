@@ -173,3 +173,52 @@ TEST(VisibilityPolygon2D, RejectsPointsOnBoundaryOrInsideObjects) {
                std::invalid_argument);
   EXPECT_NO_THROW(visibility_polygon(s, Point2(1.5, 0.5)));
 }
+
+TEST(VisibilityPolygon2D, BatchFromOneRotationalSweepEqualsSingleQueriesAndCgal) {
+  // visibility_polygons (all points in one rotational sweep) against visibility_polygon (one angular
+  // sweep per point: same vertex sequence exactly) and CGAL's triangular expansion (same region)
+  std::mt19937_64 rng(99);
+  int queries = 0, scenes = 0;
+  for (std::uint64_t seed = 200; scenes < 10 && seed < 500; ++seed) {
+    Fixture fx;
+    if (!make_fixture(seed, 2 + seed % 2, fx)) continue;
+    ++scenes;
+    auto qs = query_points(fx, rng, 150);
+    qs.push_back(qs.front());  // a repeated point
+    const auto batch = visibility_polygons(fx.framed, qs);
+    ASSERT_EQ(batch.size(), qs.size());
+    CGAL::Triangular_expansion_visibility_2<Arr, CGAL::Tag_true> tev(fx.arr);
+    CGAL::Arr_naive_point_location<Arr> locator(fx.arr);
+    for (std::size_t i = 0; i < qs.size(); ++i) {
+      const Point2& q = qs[i];
+      const auto single = visibility_polygon(fx.framed, q).vertices;
+      ASSERT_TRUE(single == batch[i].vertices) << "seed " << seed << " q=(" << q.ax << "," << q.ay << ")";
+      const K::Point_2 cq(q.ax, q.ay);
+      const auto located = locator.locate(cq);
+      const Arr::Face_const_handle* face = boost::get<Arr::Face_const_handle>(&located);
+      ASSERT_TRUE(face);
+      Arr out_tev;
+      const auto f_tev = tev.compute_visibility(cq, *face, out_tev);
+      std::vector<Pt> mine;
+      for (const Point2& p : batch[i].vertices) mine.push_back(to_pt(p));
+      ASSERT_TRUE(normalize(mine) == normalize(face_polygon(f_tev))) << "seed " << seed;
+      ++queries;
+    }
+  }
+  EXPECT_GE(queries, 1500);
+}
+
+TEST(VisibilityPolygon2D, BatchRejectsPointsOnBoundaryOrInsideObjects) {
+  const Scene2D s = with_frame(make_scene2d({{{{Point2(0.0, 0.0), Point2(1.0, 0.0), Point2(1.0, 1.0), Point2(0.0, 1.0)}}}}));
+  EXPECT_THROW(visibility_polygons(s, {Point2(1.5, 0.5), Point2(0.5, 0.5)}), std::invalid_argument);  // inside
+  EXPECT_THROW(visibility_polygons(s, {Point2(1.0, 0.5)}), std::invalid_argument);                     // on an edge
+  EXPECT_THROW(visibility_polygons(s, {Point2(0.5, 0.0)}), std::invalid_argument);                     // horizontal edge
+  EXPECT_THROW(visibility_polygons(s, {Point2(1.0, 1.0)}), std::invalid_argument);                     // a vertex
+  EXPECT_THROW(visibility_polygons(s, {Point2(100.0, 0.5)}), std::invalid_argument);                   // outside frame
+  EXPECT_THROW(visibility_polygons(make_scene2d({{{{Point2(0.0, 0.0), Point2(1.0, 0.0), Point2(1.0, 1.0)}}}}),
+                                   {Point2(3.0, 3.0)}),
+               std::invalid_argument);  // no frame
+  const auto ok = visibility_polygons(s, {Point2(1.5, 0.5), Point2(-0.25, 1.0)});
+  EXPECT_TRUE(ok[0].vertices == visibility_polygon(s, Point2(1.5, 0.5)).vertices);
+  EXPECT_TRUE(ok[1].vertices == visibility_polygon(s, Point2(-0.25, 1.0)).vertices);
+}
