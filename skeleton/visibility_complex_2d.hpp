@@ -57,10 +57,11 @@ struct VisibilityComplex2D {
   bool gluing_consistent = true;
 };
 
-// Builds the complex. Input: a scene without frame. Cost: the visibility graph (`method`: the
-// output-sensitive rotational sweep, O((n + k) log n) for k visible pairs, by default) plus one exact
-// O(n) ray shot per edge for its end objects, O(b n) for b bitangents. Throws std::logic_error if a
-// bitangent does not get its 4 edges (a bug, never bad input).
+// Builds the complex. Input: a scene without frame. Cost with the default `method` (the output-sensitive
+// rotational sweep): O((n + K) log n) for K visible vertex pairs: the graph sweep, then one more sweep
+// answering the two rays of every edge's sample line (the objects at its ends). With PerVertexSweep:
+// O(n^2 log n) plus one exact O(n) ray shot per ray. Throws std::logic_error if a bitangent does not get
+// its 4 edges (a bug, never bad input).
 VisibilityComplex2D visibility_complex(const Scene2D& scene, void (*progress)(double) = nullptr,
                                        VisibilityGraphMethod method = VisibilityGraphMethod::RotationalSweep);
 
