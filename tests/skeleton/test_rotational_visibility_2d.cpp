@@ -6,6 +6,7 @@
 #include "scene2d_test_util.hpp"
 #include "skeleton/rotational_visibility_2d.hpp"
 #include "skeleton/visibility_complex_2d.hpp"
+#include "skeleton/visibility_polygon_2d.hpp"
 
 #include <gtest/gtest.h>
 
@@ -321,4 +322,31 @@ TEST(RotationalVisibility2D, LargerScenesInGeneralPositionMatchPerVertexSweep) {
     for (std::size_t i = 0; i < fast.bitangents.size(); ++i)
       EXPECT_EQ(describe(s, fast.bitangents[i]), describe(s, ref.bitangents[i]));
   }
+}
+
+TEST(RotationalVisibility2D, BatchPolygonsOnDegenerateScenesEqualSingleQueries) {
+  // boxes with flat vertices and holes, triangles on a small grid, and query points on a quarter-integer
+  // grid: many rays through several vertices, through (1, 0) and (-1, 0) directions (the half-turn seams)
+  int checked = 0;
+  for (std::uint64_t seed = 1; seed <= 80; ++seed) {
+    const auto polys = seed % 2 ? random_box_scene(seed, 3 + seed % 6) : random_triangle_scene(seed, 3 + seed % 4);
+    const auto s = try_scene(polys);
+    ASSERT_TRUE(s.has_value());
+    const Scene2D framed = with_frame(*s, 0.2);
+    std::vector<Point2> qs;
+    std::mt19937_64 rng(seed);
+    for (int t = 0; t < 400 && qs.size() < 40; ++t) {
+      const Point2 q(std::uniform_int_distribution<int>(-8, 80)(rng) / 4.0,
+                     std::uniform_int_distribution<int>(-8, 80)(rng) / 4.0);
+      if (on_boundary(framed, q) || inside_obstacle(framed, q)) continue;
+      qs.push_back(q);
+    }
+    const auto batch = visibility_polygons(framed, qs);
+    for (std::size_t i = 0; i < qs.size(); ++i) {
+      ASSERT_TRUE(batch[i].vertices == visibility_polygon(framed, qs[i]).vertices)
+          << "seed " << seed << " q " << qs[i].ax << "," << qs[i].ay;
+      ++checked;
+    }
+  }
+  EXPECT_GE(checked, 2500);
 }
