@@ -9,7 +9,7 @@
 // rotation-tree principle). Such a q is either the counterclockwise end of p's viewed edge or p's
 // neighbour in the list (a vertex appearing in the middle of p's view is, just before, a viewer of the
 // same edge next to p), so each event is a visible pair or a local event at p's own edges, found in
-// exact direction order with a priority queue: O((n + k) log n) for n vertices and k visible pairs,
+// exact direction order with a priority queue: O((n + K) log n) for n vertices and K visible pairs,
 // after an O(n log n) plane sweep for the views at the start direction.
 #include "skeleton/visibility_graph_2d.hpp"
 

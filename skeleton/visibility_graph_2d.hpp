@@ -53,7 +53,7 @@ struct VisibleFrom2D {
 // How the visible pairs are found. Both give exactly the same graph (tests compare them with each other
 // and with an O(n^3) brute force).
 enum class VisibilityGraphMethod {
-  RotationalSweep,  // one output-sensitive sweep of all views, O((n + k) log n) (rotational_visibility_2d)
+  RotationalSweep,  // one output-sensitive sweep of all views, O((n + K) log n), K = visible pairs
   PerVertexSweep,   // one angular sweep per vertex, O(n^2 log n), on all cores (the reference)
 };
 
