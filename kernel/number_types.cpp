@@ -23,11 +23,16 @@ std::string to_rational_string(const Exact& x) {
 
 Exact parse_rational(const std::string& text) {
   if (text.empty()) throw std::invalid_argument("empty number");
+  // Plain integers are read exactly too (to_rational_string writes integers without "/1"); decimal
+  // literals and exponents are read as the nearest double, which is then exact.
+  const bool plain_integer =
+      text.find_first_not_of("0123456789", text[0] == '-' || text[0] == '+' ? 1 : 0) == std::string::npos &&
+      text.size() > (text[0] == '-' || text[0] == '+' ? 1u : 0u);
   const auto slash = text.find('/');
-  if (slash != std::string::npos) {
+  if (slash != std::string::npos || plain_integer) {
     mpq_t q;
     mpq_init(q);
-    if (mpq_set_str(q, text.c_str(), 10) != 0) {
+    if (mpq_set_str(q, text.c_str() + (text[0] == '+' ? 1 : 0), 10) != 0) {
       mpq_clear(q);
       throw std::invalid_argument("not a rational number: '" + text + "'");
     }

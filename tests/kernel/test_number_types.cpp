@@ -40,6 +40,12 @@ TEST(NumberTypes, ParseRational) {
   EXPECT_EQ(parse_rational("1/3") * 3, Exact(1));
   EXPECT_EQ(parse_rational("-2/4"), Exact(-1) / Exact(2));
   EXPECT_EQ(parse_rational("0.1"), to_exact(0.1));  // the double 0.1, not 1/10
+  // integers beyond 2^53 are exact (not rounded through a double)
+  EXPECT_EQ(parse_rational("123456789012345678901234567890"),
+            Exact(ExactInt("123456789012345678901234567890")));
+  EXPECT_EQ(parse_rational("-9007199254740993"), Exact(ExactInt("-9007199254740993")));
+  EXPECT_EQ(parse_rational("+7"), Exact(7));
+  EXPECT_THROW(parse_rational("-"), std::invalid_argument);
   EXPECT_EQ(parse_rational("1e-300"), to_exact(1e-300));
   EXPECT_THROW(parse_rational(""), std::invalid_argument);
   EXPECT_THROW(parse_rational("1/0"), std::invalid_argument);
