@@ -79,7 +79,8 @@ bool perfect_square(const ExactInt& z, ExactInt* root) {
 }
 
 // All distinct real roots of p (none when p is identically zero or constant). Rational roots are returned as
-// rational RootNumbers, irrational ones as a0 + a1 sqrt(R) with R a positive non-square integer.
+// rational RootNumbers, irrational ones as a0 + a1 sqrt(R) with R > 0 the discriminant, a rational that is not
+// the square of a rational.
 std::vector<Root> real_roots(const Poly& p) {
   std::vector<Root> out;
   const int deg = p.degree();
@@ -100,9 +101,9 @@ std::vector<Root> real_roots(const Poly& p) {
         rational(a0 - w);
         rational(a0 + w);
       } else {
-        // sqrt(num/den) = sqrt(num*den) / den.
-        const Exact root(num * den);
-        const Exact a1 = Exact(1) / (Exact(den) * Exact(2) * p.c[2]);
+        // Root kept as the discriminant itself (its value, not num*den, keeps the interval filter finite).
+        const Exact& root = disc;
+        const Exact a1 = Exact(1) / (Exact(2) * p.c[2]);
         out.push_back({RootNumber(a0, -a1, root), false, Exact(0)});
         out.push_back({RootNumber(a0, a1, root), false, Exact(0)});
       }

@@ -94,7 +94,7 @@ struct EeeLinePoints {
 EeeLinePoints eee_line_points(const Scene& scene, const EeeEvent& event, const RootNumber& t);
 
 // The exact text of a parameter: "num/den" (or an integer) when rational, else "a+b*sqrt(c)" or
-// "a-b*sqrt(c)" with a, b, c rationals written the same way (b > 0, c > 0 an integer that is not a square).
+// "a-b*sqrt(c)" with a, b, c rationals written the same way (b > 0; c > 0 is not the square of a rational).
 // docs/cli.md documents this form.
 std::string root_number_to_string(const RootNumber& x);
 
