@@ -202,6 +202,39 @@ RationalLine rational_line(const Family& f, const Exact& t) {
   return r;
 }
 
+// [0, 1] minus the union of the closed invalid pieces (sorted here): the closures of the components of
+// positive length, with the causes of their ends (end_at_0 / end_at_1 at t = 0 / 1). sample_t is not set.
+std::vector<EeeInterval> free_components(std::vector<Invalid>& invalid, const EeeEnd& end_at_0,
+                                         const EeeEnd& end_at_1) {
+  std::stable_sort(invalid.begin(), invalid.end(), [](const Invalid& x, const Invalid& y) { return x.lo < y.lo; });
+  std::vector<EeeInterval> out;
+  RootNumber pos(0);
+  EeeEnd pos_end = end_at_0;
+  auto emit = [&](const RootNumber& t1, const EeeEnd& end1) {
+    EeeInterval iv;
+    iv.t0 = pos;
+    iv.t1 = t1;
+    iv.end0 = pos_end;
+    iv.end1 = end1;
+    out.push_back(std::move(iv));
+  };
+  for (const auto& iv : invalid) {
+    if (iv.lo > pos) emit(iv.lo, iv.lo_end);
+    if (iv.hi >= pos) {
+      pos = iv.hi;
+      pos_end = iv.hi_end;
+    }
+  }
+  if (pos < RootNumber(1)) emit(RootNumber(1), end_at_1);
+  return out;
+}
+
+Breakpoint breakpoint_at(const RootNumber& t, const EeeEnd& cause) {
+  Breakpoint b{t, true, Exact(0), cause};
+  b.rational = root_number_rational(t, &b.q);
+  return b;
+}
+
 struct Occluder {
   int index;
   std::int64_t id;
@@ -322,7 +355,7 @@ std::optional<EeeEvent> eee_event(const Scene& scene, const SceneAdjacency& adj,
   }
   if (!first_valid) return std::nullopt;
   if (stats) ++stats->tangent_triples;
-  const Breakpoint vmin = base[*first_valid], vmax = base[*last_valid];
+  Breakpoint vmin = base[*first_valid], vmax = base[*last_valid];
 
   // ---- Occluders: closed scene triangles without E1, E2, E3 as an edge, meeting the box of the three edges
   // (which contains every generator segment of a base-valid line).
@@ -333,9 +366,28 @@ std::optional<EeeEvent> eee_event(const Scene& scene, const SceneAdjacency& adj,
       box.lo = {std::min(box.lo.x, p.x), std::min(box.lo.y, p.y), std::min(box.lo.z, p.z)};
       box.hi = {std::max(box.hi.x, p.x), std::max(box.hi.y, p.y), std::max(box.hi.z, p.z)};
     }
+  // Large candidates first (a floating-point heuristic for the order only): every few occluders the free set
+  // is recomputed; the search stops when it is empty and later occluders only look inside its hull.
+  std::vector<std::pair<double, int>> cand;
   for (int ti : index.triangles_in_box(box)) {
     const auto& tr = scene.triangles[ti];
     if (has_edge(tr, E[0]->v) || has_edge(tr, E[1]->v) || has_edge(tr, E[2]->v)) continue;
+    const Point3 &p0 = scene.corner(tr, 0), &p1 = scene.corner(tr, 1), &p2 = scene.corner(tr, 2);
+    const Point3 cr = cross(p1 - p0, p2 - p0);
+    cand.emplace_back(-dot(cr, cr), ti);
+  }
+  std::sort(cand.begin(), cand.end());
+  int since_check = 0;
+  for (const auto& [key, ti] : cand) {
+    if (since_check >= 4) {
+      since_check = 0;
+      std::vector<EeeInterval> comps =
+          free_components(invalid, endpoint_end(0, E[0]->v[0]), endpoint_end(0, E[0]->v[1]));
+      if (comps.empty()) return std::nullopt;
+      vmin = breakpoint_at(comps.front().t0, comps.front().end0);
+      vmax = breakpoint_at(comps.back().t1, comps.back().end1);
+    }
+    const auto& tr = scene.triangles[ti];
     if (stats) ++stats->occluder_tests;
     Occluder T{ti, tr.id, tr.v, {}};
     for (int k = 0; k < 3; ++k) T.c[k] = to_rational(scene.corner(tr, k));
@@ -403,33 +455,17 @@ std::optional<EeeEvent> eee_event(const Scene& scene, const SceneAdjacency& adj,
       const RationalLine l = rational_line(f, t);
       return open_segment_meets_closed_triangle(l.pts[l.lo], l.pts[l.hi], T.c[0], T.c[1], T.c[2]);
     };
+    const std::size_t before = invalid.size();
     invalid_pieces(b, blocked, invalid);
+    if (invalid.size() > before) ++since_check;
   }
 
   // ---- Free components: [0, 1] minus the union of the closed invalid pieces, components of positive length.
-  std::sort(invalid.begin(), invalid.end(), [](const Invalid& x, const Invalid& y) { return x.lo < y.lo; });
   EeeEvent ev;
   for (int i = 0; i < 3; ++i) ev.edges[i] = E[i]->v;
-  RootNumber pos(0);
-  EeeEnd pos_end = endpoint_end(0, E[0]->v[0]);
-  auto emit = [&](const RootNumber& t1, const EeeEnd& end1) {
-    EeeInterval iv;
-    iv.t0 = pos;
-    iv.t1 = t1;
-    iv.end0 = pos_end;
-    iv.end1 = end1;
-    iv.sample_t = rational_strictly_between(pos, t1);
-    ev.intervals.push_back(std::move(iv));
-  };
-  for (const auto& iv : invalid) {
-    if (iv.lo > pos) emit(iv.lo, iv.lo_end);
-    if (iv.hi >= pos) {
-      pos = iv.hi;
-      pos_end = iv.hi_end;
-    }
-  }
-  if (pos < one) emit(one, endpoint_end(0, E[0]->v[1]));
+  ev.intervals = free_components(invalid, endpoint_end(0, E[0]->v[0]), endpoint_end(0, E[0]->v[1]));
   if (ev.intervals.empty()) return std::nullopt;
+  for (auto& iv : ev.intervals) iv.sample_t = rational_strictly_between(iv.t0, iv.t1);
   return ev;
 }
 
