@@ -10,6 +10,7 @@
 #include <gmp.h>
 
 #include <algorithm>
+#include <cmath>
 #include <sstream>
 #include <stdexcept>
 
@@ -357,15 +358,45 @@ std::optional<EeeEvent> eee_event(const Scene& scene, const SceneAdjacency& adj,
   if (stats) ++stats->tangent_triples;
   Breakpoint vmin = base[*first_valid], vmax = base[*last_valid];
 
-  // ---- Occluders: closed scene triangles without E1, E2, E3 as an edge, meeting the box of the three edges
-  // (which contains every generator segment of a base-valid line).
-  Box3 box{scene.vertices[E[0]->v[0]], scene.vertices[E[0]->v[0]]};
-  for (int i = 0; i < 3; ++i)
-    for (int v : E[i]->v) {
-      const Point3& p = scene.vertices[v];
-      box.lo = {std::min(box.lo.x, p.x), std::min(box.lo.y, p.y), std::min(box.lo.z, p.z)};
-      box.hi = {std::max(box.hi.x, p.x), std::max(box.hi.y, p.y), std::max(box.hi.z, p.z)};
+  // ---- Occluders: closed scene triangles without E1, E2, E3 as an edge. For base-valid t the generator
+  // points lie on P([vmin, vmax]), E2 and E3, so every generator segment lies in the convex hull of the six
+  // points H below: candidates are the triangles meeting H's bounding box (rounded outward), minus those an
+  // exact test separates from H (by a facet plane of H, or by their own plane).
+  const std::array<Vec3<Exact>, 6> H{eval(f.P, vmin.q), eval(f.P, vmax.q), A[1], B[1], A[2], B[2]};
+  Box3 box;
+  {
+    auto down = [](const Exact& x) { const double d = CGAL::to_interval(x).first; return std::nextafter(d, -HUGE_VAL); };
+    auto up = [](const Exact& x) { const double d = CGAL::to_interval(x).second; return std::nextafter(d, HUGE_VAL); };
+    box.lo = {down(H[0].x), down(H[0].y), down(H[0].z)};
+    box.hi = {up(H[0].x), up(H[0].y), up(H[0].z)};
+    for (const auto& p : H) {
+      box.lo = {std::min(box.lo.x, down(p.x)), std::min(box.lo.y, down(p.y)), std::min(box.lo.z, down(p.z))};
+      box.hi = {std::max(box.hi.x, up(p.x)), std::max(box.hi.y, up(p.y)), std::max(box.hi.z, up(p.z))};
     }
+  }
+  struct Facet {
+    int a, b, c;
+    Sign outside;
+  };
+  std::vector<Facet> facets;
+  // Facets of H (pairs of points' planes through a third point with all of H on one side); only worth their
+  // cost when there are many candidates.
+  auto compute_facets = [&]() {
+    for (int a = 0; a < 6; ++a)
+      for (int b2 = a + 1; b2 < 6; ++b2)
+        for (int c2 = b2 + 1; c2 < 6; ++c2) {
+          if (collinear(H[a], H[b2], H[c2])) continue;
+          int pos = 0, neg = 0;
+          for (int d = 0; d < 6; ++d) {
+            const Sign sd = orient3d(H[a], H[b2], H[c2], H[d]);
+            pos += sd == Sign::Positive;
+            neg += sd == Sign::Negative;
+          }
+          if (pos > 0 && neg > 0) continue;
+          if (pos == 0 && neg == 0) continue;  // flat hull: no outside
+          facets.push_back({a, b2, c2, pos > 0 ? Sign::Negative : Sign::Positive});
+        }
+  };
   // Large candidates first (a floating-point heuristic for the order only): every few occluders the free set
   // is recomputed; the search stops when it is empty and later occluders only look inside its hull.
   std::vector<std::pair<double, int>> cand;
@@ -377,6 +408,7 @@ std::optional<EeeEvent> eee_event(const Scene& scene, const SceneAdjacency& adj,
     cand.emplace_back(-dot(cr, cr), ti);
   }
   std::sort(cand.begin(), cand.end());
+  if (cand.size() > 8) compute_facets();
   int since_check = 0;
   for (const auto& [key, ti] : cand) {
     if (since_check >= 4) {
@@ -388,27 +420,35 @@ std::optional<EeeEvent> eee_event(const Scene& scene, const SceneAdjacency& adj,
       vmax = breakpoint_at(comps.back().t1, comps.back().end1);
     }
     const auto& tr = scene.triangles[ti];
-    if (stats) ++stats->occluder_tests;
     Occluder T{ti, tr.id, tr.v, {}};
     for (int k = 0; k < 3; ++k) T.c[k] = to_rational(scene.corner(tr, k));
     const Vec3<Exact> n = cross(T.c[1] - T.c[0], T.c[2] - T.c[0]);
     const Exact c = dot(n, T.c[0]);
-    // Quick exact rejection: T strictly on one side of plane(T) is impossible; instead reject when all
-    // six edge endpoints lie strictly on one side of T's plane (then so does every generator segment).
+    // Exact separation from H (see above): all of T strictly outside one facet plane of H, or all of H
+    // strictly on one side of T's plane.
     {
-      int s0 = 0;
-      bool separated = true;
-      for (int i = 0; i < 3 && separated; ++i)
-        for (const auto* p : {&A[i], &B[i]}) {
-          const int s = CGAL::sign(dot(n, *p) - c);
-          if (s == 0 || (s0 != 0 && s != s0)) {
+      bool separated = false;
+      for (const Facet& fc : facets) {
+        separated = true;
+        for (int k = 0; k < 3 && separated; ++k)
+          separated = orient3d(H[fc.a], H[fc.b], H[fc.c], T.c[k]) == fc.outside;
+        if (separated) break;
+      }
+      if (!separated) {
+        int s0 = 0;
+        separated = true;
+        for (const auto& p : H) {
+          const int sp = CGAL::sign(dot(n, p) - c);
+          if (sp == 0 || (s0 != 0 && sp != s0)) {
             separated = false;
             break;
           }
-          s0 = s;
+          s0 = sp;
         }
+      }
       if (separated) continue;
     }
+    if (stats) ++stats->occluder_tests;
     std::vector<Breakpoint> b;
     b.push_back(vmin);
     b.push_back(vmax);

@@ -425,6 +425,33 @@ TEST(EeeEvents, RandomScenesAgainstOracle) {
     EXPECT_GT(total.causes[k], 0) << k;
 }
 
+TEST(EeeEvents, LargerRandomScenesAgainstOracle) {
+  // 30 mid-sized triangles: many occluder candidates per triple (exercises the exact hull-facet culling).
+  std::mt19937 rng(77);
+  std::uniform_real_distribution<double> real(-4, 4), off(-1.5, 1.5);
+  CheckCounts total;
+  for (int scene = 0; scene < 8; ++scene) {
+    std::vector<Point3> v;
+    std::vector<std::array<int, 3>> t;
+    while (t.size() < 30) {
+      const Point3 c{real(rng), real(rng), real(rng)};
+      const int b = static_cast<int>(v.size());
+      for (int q = 0; q < 3; ++q) v.push_back({c.x + off(rng), c.y + off(rng), c.z + off(rng)});
+      if (collinear(v[b], v[b + 1], v[b + 2])) {
+        v.resize(b);
+        continue;
+      }
+      t.push_back({b, b + 1, b + 2});
+    }
+    const Scene s = make_scene(v, t);
+    total.add(check_scene(s, "larger scene " + std::to_string(scene), 120, 16, 500 + scene));
+    if (::testing::Test::HasFailure()) break;
+  }
+  EXPECT_GT(total.events, 5);
+  std::printf("EEE larger: %d triples, %d events, %d intervals, %d irrational ends\n", total.triples, total.events,
+              total.intervals, total.irrational_ends);
+}
+
 TEST(EeeEvents, RootNumberText) {
   EXPECT_EQ(root_number_to_string(RootNumber(Exact(3, 4))), "3/4");
   EXPECT_EQ(root_number_to_string(RootNumber(Exact(2))), "2");
