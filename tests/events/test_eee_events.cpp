@@ -425,6 +425,51 @@ TEST(EeeEvents, RandomScenesAgainstOracle) {
     EXPECT_GT(total.causes[k], 0) << k;
 }
 
+TEST(EeeEvents, DegenerateScenesAgainstOracle) {
+  // Tiny integer grids ({-1, 0, 1}^3 and {0, 1, 2}^3 halved) give many coincidences: occluders through
+  // generator endpoints, shared positions with different vertex ids (duplicates), coplanar faces, edges on one
+  // regulus, lines through several vertices; closed tetrahedra on the grid test the edge rule with two faces.
+  std::mt19937 rng(4242);
+  std::uniform_int_distribution<int> coord(-1, 1), ntri(5, 9), coin(0, 2);
+  CheckCounts total;
+  for (int scene = 0; scene < 60; ++scene) {
+    std::vector<Point3> v;
+    std::vector<std::array<int, 3>> t;
+    const double scale = scene % 2 ? 1.0 : 0.5;
+    auto pt = [&]() -> Point3 { return {scale * coord(rng), scale * coord(rng), scale * (coord(rng) + 1)}; };
+    const int n = ntri(rng);
+    while (static_cast<int>(t.size()) < n) {
+      const int b = static_cast<int>(v.size());
+      if (coin(rng) == 0 && b >= 4 && static_cast<int>(t.size()) + 4 <= n + 3) {
+        // a closed tetrahedron on the grid
+        for (int q = 0; q < 4; ++q) v.push_back(pt());
+        if (orient3d(v[b], v[b + 1], v[b + 2], v[b + 3]) == Sign::Zero) {
+          v.resize(b);
+          continue;
+        }
+        t.push_back({b, b + 1, b + 2});
+        t.push_back({b, b + 1, b + 3});
+        t.push_back({b, b + 2, b + 3});
+        t.push_back({b + 1, b + 2, b + 3});
+        continue;
+      }
+      for (int q = 0; q < 3; ++q) v.push_back(pt());
+      if (collinear(v[b], v[b + 1], v[b + 2])) {
+        v.resize(b);
+        continue;
+      }
+      t.push_back({b, b + 1, b + 2});
+    }
+    const Scene s = make_scene(v, t);
+    total.add(check_scene(s, "degenerate scene " + std::to_string(scene), 50, 16, 900 + scene));
+    if (::testing::Test::HasFailure()) break;
+  }
+  EXPECT_GT(total.events, 10);
+  std::printf("EEE degenerate: %d triples, %d events, %d intervals, %d irrational ends\n", total.triples,
+              total.events, total.intervals, total.irrational_ends);
+  for (const auto& [k, n] : total.causes) std::printf("  end cause %s: %d\n", k.c_str(), n);
+}
+
 TEST(EeeEvents, LargerRandomScenesAgainstOracle) {
   // 30 mid-sized triangles: many occluder candidates per triple (exercises the exact hull-facet culling).
   std::mt19937 rng(77);
