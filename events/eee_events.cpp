@@ -60,6 +60,18 @@ Poly operator*(const Poly& a, const Poly& b) {
 
 using PVec = Vec3<Poly>;
 PVec pconst(const Vec3<Exact>& v) { return {Poly(v.x), Poly(v.y), Poly(v.z)}; }
+// Cheap forms for a constant factor (no polynomial products).
+Poly scaled(const Poly& p, const Exact& s) {
+  Poly r;
+  for (int k = 0; k < 3; ++k)
+    if (!CGAL::is_zero(p.c[k])) r.c[k] = p.c[k] * s;
+  return r;
+}
+Poly dotc(const PVec& a, const Vec3<Exact>& b) {
+  Poly r;
+  for (int k = 0; k < 3; ++k) r.c[k] = a.x.c[k] * b.x + a.y.c[k] * b.y + a.z.c[k] * b.z;
+  return r;
+}
 Vec3<Exact> eval(const PVec& v, const Exact& t) { return {v.x(t), v.y(t), v.z(t)}; }
 
 // One real root of a polynomial: exact, with its rational value when it is rational.
@@ -175,8 +187,8 @@ struct Family {
   // Homogeneous plane-side polynomial of the generator point k (0: P, 1: Q2, 2: Q3) w.r.t. plane n.x = c:
   // its sign times sign(den_k) (den_0 = 1) is the side of the actual point.
   Poly height(int k, const Vec3<Exact>& n, const Exact& c) const {
-    if (k == 0) return dot(pconst(n), P) - Poly(c);
-    return dot(pconst(n), num[k]) - den[k] * Poly(c);
+    if (k == 0) return dotc(P, n) - Poly(c);
+    return dotc(num[k], n) - scaled(den[k], c);
   }
 };
 
@@ -378,6 +390,8 @@ std::optional<EeeEvent> eee_event(const Scene& scene, const SceneAdjacency& adj,
     int a, b, c;
     Sign outside;
   };
+  // Normal of plane(P(t), l2) (a VEE line through a point W has W in it).
+  const PVec plane_p_l2 = cross(pconst(f.D[1]), f.P - pconst(A[1]));
   std::vector<Facet> facets;
   // Facets of H (pairs of points' planes through a third point with all of H on one side); only worth their
   // cost when there are many candidates.
@@ -454,7 +468,7 @@ std::optional<EeeEvent> eee_event(const Scene& scene, const SceneAdjacency& adj,
     b.push_back(vmax);
     // VEE lines through T's vertices (for the cause; also roots of the edge polynomials below).
     for (int k = 0; k < 3; ++k) {
-      const Poly p = dot(cross(pconst(f.D[1]), f.P - pconst(A[1])), pconst(T.c[k] - A[1]));
+      const Poly p = dotc(plane_p_l2, T.c[k] - A[1]);
       for (const Root& r : real_roots(p)) {
         if (!(r.t > vmin.t && r.t < vmax.t)) continue;
         const Vec3<Exact> d = eval(f.Ld, r.q), x = T.c[k] - eval(f.P, r.q);
@@ -471,7 +485,7 @@ std::optional<EeeEvent> eee_event(const Scene& scene, const SceneAdjacency& adj,
     // EEEE lines meeting an edge line of T: side(L(t), edge line) = 0, a quadratic in t.
     for (int k = 0; k < 3; ++k) {
       const PluckerLine<Exact> el = line_through(T.c[k], T.c[(k + 1) % 3]);
-      const Poly q = dot(f.Ld, pconst(el.m)) + dot(pconst(el.d), f.Lm);
+      const Poly q = dotc(f.Ld, el.m) + dotc(f.Lm, el.d);
       EeeEnd cause;
       cause.cause = EeeEnd::Cause::Occluder;
       cause.triangle = T.id;

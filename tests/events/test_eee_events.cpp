@@ -406,7 +406,7 @@ Scene random_scene(std::mt19937& rng, int kind) {
 TEST(EeeEvents, RandomScenesAgainstOracle) {
   std::mt19937 rng(20261201);
   CheckCounts total;
-  for (int scene = 0; scene < 120; ++scene) {
+  for (int scene = 0; scene < 100; ++scene) {
     const int kind = scene % 3;
     const Scene s = random_scene(rng, kind);
     const CheckCounts c = check_scene(s, "random scene " + std::to_string(scene) + " kind " + std::to_string(kind),
