@@ -260,6 +260,9 @@ struct Occluder {
 std::optional<EeeEvent> eee_event(const Scene& scene, const SceneAdjacency& adj, const OccluderIndex& index,
                                   int e1, int e2, int e3, EeeStats* stats) {
   std::array<int, 3> ei{e1, e2, e3};
+  for (int e : ei)
+    if (e < 0 || e >= static_cast<int>(adj.edges.size()))
+      throw std::out_of_range("eee_event: edge index " + std::to_string(e) + " out of range");
   std::sort(ei.begin(), ei.end());
   if (ei[0] == ei[1] || ei[1] == ei[2]) return std::nullopt;
   const SceneEdge* E[3] = {&adj.edges[ei[0]], &adj.edges[ei[1]], &adj.edges[ei[2]]};

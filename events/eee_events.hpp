@@ -77,6 +77,7 @@ struct EeeStats {
 // The one EEE event of the edges adj.edges[e1], adj.edges[e2], adj.edges[e3] (indices into adj.edges, any
 // order: they are sorted), or std::nullopt if it has no free interval (or the edges share a vertex, or two
 // supporting lines are coplanar). Exact. Thread-safe (no shared mutable state besides `stats` if given).
+// Throws std::out_of_range for an index outside adj.edges.
 // Sets sample_t of each interval; end_object_front/back are left at -1 (see eee_segment_ends).
 std::optional<EeeEvent> eee_event(const Scene& scene, const SceneAdjacency& adj, const OccluderIndex& index,
                                   int e1, int e2, int e3, EeeStats* stats = nullptr);

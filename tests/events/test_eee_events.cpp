@@ -8,6 +8,7 @@
 #include "tests/events/eee_oracle.hpp"
 
 #include <gtest/gtest.h>
+#include <tbb/parallel_for.h>
 
 #include <chrono>
 #include <map>
@@ -495,6 +496,38 @@ TEST(EeeEvents, LargerRandomScenesAgainstOracle) {
   EXPECT_GT(total.events, 5);
   std::printf("EEE larger: %d triples, %d events, %d intervals, %d irrational ends\n", total.triples, total.events,
               total.intervals, total.irrational_ends);
+}
+
+TEST(EeeEvents, ParallelCallsAgreeWithSerial) {
+  // eee_event is called from oneTBB workers by the enumeration: same answers as serial calls.
+  std::mt19937 rng(99);
+  const Scene s = random_scene(rng, 0);
+  const SceneAdjacency adj = build_scene_adjacency(s);
+  const OccluderIndex index(s);
+  const int ne = static_cast<int>(adj.edges.size());
+  std::vector<std::array<int, 3>> triples;
+  for (int i = 0; i < ne; ++i)
+    for (int j = i + 1; j < ne; ++j)
+      for (int k = j + 1; k < ne; ++k) triples.push_back({i, j, k});
+  std::vector<std::optional<EeeEvent>> serial(triples.size()), parallel(triples.size());
+  for (std::size_t n = 0; n < triples.size(); ++n)
+    serial[n] = eee_event(s, adj, index, triples[n][0], triples[n][1], triples[n][2]);
+  tbb::parallel_for(std::size_t(0), triples.size(), [&](std::size_t n) {
+    parallel[n] = eee_event(s, adj, index, triples[n][0], triples[n][1], triples[n][2]);
+  });
+  int events = 0;
+  for (std::size_t n = 0; n < triples.size(); ++n) {
+    ASSERT_EQ(serial[n].has_value(), parallel[n].has_value());
+    if (!serial[n]) continue;
+    ++events;
+    ASSERT_EQ(serial[n]->intervals.size(), parallel[n]->intervals.size());
+    for (std::size_t k = 0; k < serial[n]->intervals.size(); ++k) {
+      EXPECT_TRUE(serial[n]->intervals[k].t0 == parallel[n]->intervals[k].t0);
+      EXPECT_TRUE(serial[n]->intervals[k].t1 == parallel[n]->intervals[k].t1);
+    }
+  }
+  EXPECT_GT(events, 0);
+  EXPECT_THROW(eee_event(s, adj, index, 0, 1, ne), std::out_of_range);
 }
 
 TEST(EeeEvents, RootNumberText) {
