@@ -347,16 +347,19 @@ std::optional<EeeEvent> eee_event(const Scene& scene, const SceneAdjacency& adj,
   // rational sample (the status is constant there), each rational interior breakpoint decided itself.
   // Irrational breakpoints need no decision (docs/theory.md: an irrational parameter is blocked only if an
   // adjacent gap is blocked by the same occluder, so it lies in a closed invalid gap already).
-  auto invalid_pieces = [](const std::vector<Breakpoint>& b, auto&& invalid_at, std::vector<Invalid>& out) {
+  // `gap_invalid` is only called strictly inside gaps, `invalid_at` at rational breakpoints.
+  auto invalid_pieces = [](const std::vector<Breakpoint>& b, auto&& gap_invalid, auto&& invalid_at,
+                           std::vector<Invalid>& out) {
     for (std::size_t i = 0; i + 1 < b.size(); ++i) {
-      if (invalid_at(rational_strictly_between(b[i].t, b[i + 1].t)))
+      if (gap_invalid(rational_strictly_between(b[i].t, b[i + 1].t)))
         out.push_back({b[i].t, b[i + 1].t, b[i].cause, b[i + 1].cause});
       if (i + 2 < b.size() && b[i + 1].rational && invalid_at(b[i + 1].q))
         out.push_back({b[i + 1].t, b[i + 1].t, b[i + 1].cause, b[i + 1].cause});
     }
   };
   std::vector<Invalid> invalid;
-  invalid_pieces(base, [&](const Exact& t) { return !base_valid(t); }, invalid);
+  auto base_invalid = [&](const Exact& t) { return !base_valid(t); };
+  invalid_pieces(base, base_invalid, base_invalid, invalid);
 
   // The hull [vmin, vmax] of the base-valid set: occlusion matters only there.
   std::optional<std::size_t> first_valid, last_valid;
@@ -486,15 +489,16 @@ std::optional<EeeEvent> eee_event(const Scene& scene, const SceneAdjacency& adj,
       }
     }
     // EEEE lines meeting an edge line of T: side(L(t), edge line) = 0, a quadratic in t.
+    std::array<Poly, 3> q, h;
     for (int k = 0; k < 3; ++k) {
       const PluckerLine<Exact> el = line_through(T.c[k], T.c[(k + 1) % 3]);
-      const Poly q = dotc(f.Ld, el.m) + dotc(f.Lm, el.d);
+      q[k] = dotc(f.Ld, el.m) + dotc(f.Lm, el.d);
       EeeEnd cause;
       cause.cause = EeeEnd::Cause::Occluder;
       cause.triangle = T.id;
       cause.feature.kind = OccluderFeature::Kind::Edge;
       cause.feature.ids = {T.ids[k], T.ids[(k + 1) % 3]};
-      add_roots(b, q, cause, vmin.t, vmax.t);
+      add_roots(b, q[k], cause, vmin.t, vmax.t);
     }
     // A generator point crossing T's plane (the blocked part starts/stops at the segment's end).
     {
@@ -503,7 +507,10 @@ std::optional<EeeEvent> eee_event(const Scene& scene, const SceneAdjacency& adj,
       cause.triangle = T.id;
       cause.feature.kind = OccluderFeature::Kind::Face;
       cause.feature.ids = {T.ids[0], T.ids[1], T.ids[2]};
-      for (int k = 0; k < 3; ++k) add_roots(b, f.height(k, n, c), cause, vmin.t, vmax.t);
+      for (int k = 0; k < 3; ++k) {
+        h[k] = f.height(k, n, c);
+        add_roots(b, h[k], cause, vmin.t, vmax.t);
+      }
       for (int k = 1; k <= 2; ++k) add_roots(b, f.den[k], singular_end(k), vmin.t, vmax.t);
     }
     sort_unique(b);
@@ -512,8 +519,24 @@ std::optional<EeeEvent> eee_event(const Scene& scene, const SceneAdjacency& adj,
       const RationalLine l = rational_line(f, t);
       return open_segment_meets_closed_triangle(l.pts[l.lo], l.pts[l.hi], T.c[0], T.c[1], T.c[2]);
     };
+    // Inside a gap L(t) is not in T's plane and the status is the sign function of docs/theory.md: generator
+    // points strictly on both sides of the plane, and side signs w.r.t. T's edge lines all >= 0 or all <= 0.
+    auto blocked_in_gap = [&](const Exact& t) {
+      const int d1 = CGAL::sign(f.den[1](t)), d2 = CGAL::sign(f.den[2](t));
+      if (d1 == 0 || d2 == 0) return false;  // not inside a gap
+      const int hs[3] = {CGAL::sign(h[0](t)), CGAL::sign(h[1](t)) * d1, CGAL::sign(h[2](t)) * d2};
+      const bool above = hs[0] > 0 || hs[1] > 0 || hs[2] > 0, below = hs[0] < 0 || hs[1] < 0 || hs[2] < 0;
+      if (!above || !below) return false;
+      bool pos = false, neg = false;
+      for (int k = 0; k < 3; ++k) {
+        const int sk = CGAL::sign(q[k](t));
+        pos = pos || sk > 0;
+        neg = neg || sk < 0;
+      }
+      return !(pos && neg);
+    };
     const std::size_t before = invalid.size();
-    invalid_pieces(b, blocked, invalid);
+    invalid_pieces(b, blocked_in_gap, blocked, invalid);
     if (invalid.size() > before) ++since_check;
   }
 
