@@ -377,10 +377,25 @@ std::optional<EeeEvent> eee_event(const Scene& scene, const SceneAdjacency& adj,
   Breakpoint vmin = base[*first_valid], vmax = base[*last_valid];
 
   // ---- Occluders: closed scene triangles without E1, E2, E3 as an edge. For base-valid t the generator
-  // points lie on P([vmin, vmax]), E2 and E3, so every generator segment lies in the convex hull of the six
-  // points H below: candidates are the triangles meeting H's bounding box (rounded outward), minus those an
-  // exact test separates from H (by a facet plane of H, or by their own plane).
-  const std::array<Vec3<Exact>, 6> H{eval(f.P, vmin.q), eval(f.P, vmax.q), A[1], B[1], A[2], B[2]};
+  // points lie on P([vmin, vmax]) and on the parts of E2, E3 that Q2, Q3 sweep for t in [vmin, vmax] (when
+  // den_k keeps its sign there s_k is monotone, so that part is [s_k(vmin), s_k(vmax)] clipped to [0, 1];
+  // else all of E_k), so every generator segment lies in the convex hull of the six points H below:
+  // candidates are the triangles meeting H's bounding box (rounded outward), minus those an exact test
+  // separates from H (by a facet plane of H, or by their own plane).
+  auto swept_part = [&](int k, Vec3<Exact>* lo, Vec3<Exact>* hi) {
+    *lo = A[k];
+    *hi = B[k];
+    const Exact d0 = f.den[k](vmin.q), d1 = f.den[k](vmax.q);
+    if (CGAL::sign(d0) == 0 || CGAL::sign(d0) != CGAL::sign(d1)) return;  // den is linear: no root inside
+    const Exact s0 = f.sn[k](vmin.q) / d0, s1 = f.sn[k](vmax.q) / d1;
+    const Exact a = std::max(Exact(0), std::min(s0, s1)), b = std::min(Exact(1), std::max(s0, s1));
+    if (a > b) return;  // cannot happen for a base-valid range; keep the whole edge
+    *lo = A[k] + a * f.D[k];
+    *hi = A[k] + b * f.D[k];
+  };
+  std::array<Vec3<Exact>, 6> H{eval(f.P, vmin.q), eval(f.P, vmax.q), A[1], B[1], A[2], B[2]};
+  swept_part(1, &H[2], &H[3]);
+  swept_part(2, &H[4], &H[5]);
   Box3 box;
   {
     auto down = [](const Exact& x) { const double d = CGAL::to_interval(x).first; return std::nextafter(d, -HUGE_VAL); };
