@@ -3,11 +3,10 @@
 #include "events/occluder_index.hpp"
 #include "events/ray_first_hit.hpp"
 #include "kernel/predicates.hpp"
+#include "kernel/quadratic_polynomial.hpp"
 #include "kernel/rational_between.hpp"
 #include "kernel/segment_triangle_intersection.hpp"
 #include "kernel/spatial_index.hpp"
-
-#include <gmp.h>
 
 #include <algorithm>
 #include <cmath>
@@ -17,113 +16,19 @@
 namespace exactvis {
 namespace {
 
-// A polynomial of degree <= 2 in the family parameter t, exact rational coefficients c[0] + c[1] t + c[2] t^2.
-// Every quantity of the EEE family used here has degree <= 2 (docs/theory.md section 6).
-struct Poly {
-  std::array<Exact, 3> c{Exact(0), Exact(0), Exact(0)};
-  Poly() = default;
-  Poly(int v) { c[0] = Exact(v); }  // NOLINT: Vec3<Poly> default-constructs from 0
-  Poly(const Exact& v) { c[0] = v; }  // NOLINT
-  static Poly linear(const Exact& c0, const Exact& c1) {
-    Poly p;
-    p.c[0] = c0;
-    p.c[1] = c1;
-    return p;
-  }
-  int degree() const {
-    for (int k = 2; k >= 0; --k)
-      if (!CGAL::is_zero(c[k])) return k;
-    return -1;  // identically zero
-  }
-  Exact operator()(const Exact& t) const { return (c[2] * t + c[1]) * t + c[0]; }
-};
-Poly operator+(const Poly& a, const Poly& b) {
-  Poly r;
-  for (int k = 0; k < 3; ++k) r.c[k] = a.c[k] + b.c[k];
-  return r;
-}
-Poly operator-(const Poly& a, const Poly& b) {
-  Poly r;
-  for (int k = 0; k < 3; ++k) r.c[k] = a.c[k] - b.c[k];
-  return r;
-}
-Poly operator-(const Poly& a) { return Poly() - a; }
-Poly operator*(const Poly& a, const Poly& b) {
-  const int da = a.degree(), db = b.degree();
-  if (da < 0 || db < 0) return Poly();
-  if (da + db > 2) throw std::logic_error("eee_events: polynomial degree above 2");
-  Poly r;
-  for (int i = 0; i <= da; ++i)
-    for (int j = 0; j <= db; ++j) r.c[i + j] += a.c[i] * b.c[j];
-  return r;
-}
+// Every quantity of the EEE family used here is a polynomial of degree <= 2 in t (docs/theory.md section 6).
+using Poly = QuadraticPolynomial;
+using Root = RealRoot;
 
 using PVec = Vec3<Poly>;
 PVec pconst(const Vec3<Exact>& v) { return {Poly(v.x), Poly(v.y), Poly(v.z)}; }
-// Cheap forms for a constant factor (no polynomial products).
-Poly scaled(const Poly& p, const Exact& s) {
-  Poly r;
-  for (int k = 0; k < 3; ++k)
-    if (!CGAL::is_zero(p.c[k])) r.c[k] = p.c[k] * s;
-  return r;
-}
+// Dot product with a constant vector (no polynomial products).
 Poly dotc(const PVec& a, const Vec3<Exact>& b) {
   Poly r;
   for (int k = 0; k < 3; ++k) r.c[k] = a.x.c[k] * b.x + a.y.c[k] * b.y + a.z.c[k] * b.z;
   return r;
 }
 Vec3<Exact> eval(const PVec& v, const Exact& t) { return {v.x(t), v.y(t), v.z(t)}; }
-
-// One real root of a polynomial: exact, with its rational value when it is rational.
-struct Root {
-  RootNumber t;
-  bool rational = true;
-  Exact q;
-};
-
-bool perfect_square(const ExactInt& z, ExactInt* root) {
-  if (CGAL::sign(z) < 0 || !mpz_perfect_square_p(z.mpz())) return false;
-  mpz_t r;
-  mpz_init(r);
-  mpz_sqrt(r, z.mpz());
-  *root = ExactInt(r);
-  mpz_clear(r);
-  return true;
-}
-
-// All distinct real roots of p (none when p is identically zero or constant). Rational roots are returned as
-// rational RootNumbers, irrational ones as a0 + a1 sqrt(R) with R > 0 the discriminant, a rational that is not
-// the square of a rational.
-std::vector<Root> real_roots(const Poly& p) {
-  std::vector<Root> out;
-  const int deg = p.degree();
-  auto rational = [&](const Exact& q) { out.push_back({RootNumber(q), true, q}); };
-  if (deg == 1) {
-    rational(-p.c[0] / p.c[1]);
-  } else if (deg == 2) {
-    const Exact disc = p.c[1] * p.c[1] - Exact(4) * p.c[2] * p.c[0];
-    const int s = CGAL::sign(disc);
-    const Exact a0 = -p.c[1] / (Exact(2) * p.c[2]);
-    if (s == 0) {
-      rational(a0);
-    } else if (s > 0) {
-      const ExactInt num = disc.numerator(), den = disc.denominator();
-      ExactInt rn, rd;
-      if (perfect_square(num, &rn) && perfect_square(den, &rd)) {
-        const Exact w = Exact(rn) / Exact(rd) / (Exact(2) * p.c[2]);
-        rational(a0 - w);
-        rational(a0 + w);
-      } else {
-        // Root kept as the discriminant itself (its value, not num*den, keeps the interval filter finite).
-        const Exact& root = disc;
-        const Exact a1 = Exact(1) / (Exact(2) * p.c[2]);
-        out.push_back({RootNumber(a0, -a1, root), false, Exact(0)});
-        out.push_back({RootNumber(a0, a1, root), false, Exact(0)});
-      }
-    }
-  }
-  return out;
-}
 
 // A parameter where validity may change, with the cause reported if a free interval ends there.
 struct Breakpoint {

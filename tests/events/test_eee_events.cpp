@@ -624,15 +624,5 @@ TEST(EeeEvents, RootNumberText) {
   EXPECT_EQ(root_number_to_string(RootNumber(Exact(0), Exact(2), Exact(7))), "0+2*sqrt(7)");
 }
 
-TEST(EeeEvents, RationalStrictlyBetween) {
-  const RootNumber a(Exact(0), Exact(1), Exact(2));  // sqrt 2
-  const RootNumber b(Exact(1, 1000000000), Exact(1), Exact(2));
-  const Exact q = rational_strictly_between(a, b);
-  EXPECT_TRUE(a < RootNumber(q) && RootNumber(q) < b);
-  const Exact r = rational_strictly_between(RootNumber(Exact(1)), a);
-  EXPECT_TRUE(RootNumber(1) < RootNumber(r) && RootNumber(r) < a);
-  EXPECT_THROW(rational_strictly_between(b, a), std::invalid_argument);
-}
-
 }  // namespace
 }  // namespace exactvis
