@@ -424,6 +424,33 @@ TEST(EeeEvents, OccluderEdgeOnTheRegulus) {
   check_scene(s, "regulus occluder", 0, 64, 3);
 }
 
+TEST(EeeEvents, OccluderInTheFamilysPlaneBlocksOneLine) {
+  // A triangle in the plane x = 1/4 contains the line a = 1/4 (t = 5/8) between y = 1.5 and 2.5; every other
+  // line of the family is parallel to that plane. The single blocked line splits [0, 1] into two intervals
+  // sharing the end 5/8 (reported with one of the coinciding causes: the line passes through the occluder's
+  // vertex (1/4, 2.5, 5/8), meets its edge line x = 1/4, y = 1.5, and P(5/8) lies in its plane).
+  Paraboloid p;
+  const int b = static_cast<int>(p.v.size());
+  p.v.push_back({0.25, 1.5, -5});
+  p.v.push_back({0.25, 1.5, 5});
+  p.v.push_back({0.25, 2.5, 0.625});
+  p.t.push_back({b, b + 1, b + 2});
+  const Scene s = make_scene(p.v, p.t);
+  const SceneAdjacency adj = build_scene_adjacency(s);
+  const OccluderIndex index(s);
+  const auto ev = eee_event(s, adj, index, adj.edge_index(0, 1), adj.edge_index(3, 4), adj.edge_index(6, 7));
+  ASSERT_TRUE(ev.has_value());
+  ASSERT_EQ(ev->intervals.size(), 2u);
+  EXPECT_TRUE(ev->intervals[0].t0 == RootNumber(0));
+  EXPECT_TRUE(ev->intervals[0].t1 == RootNumber(Exact(5, 8)));
+  EXPECT_TRUE(ev->intervals[1].t0 == RootNumber(Exact(5, 8)));
+  EXPECT_TRUE(ev->intervals[1].t1 == RootNumber(1));
+  EXPECT_EQ(ev->intervals[0].end1.cause, EeeEnd::Cause::Occluder);
+  EXPECT_EQ(ev->intervals[0].end1.triangle, 3);
+  EXPECT_EQ(ev->intervals[1].end0.triangle, 3);
+  check_scene(s, "coplanar occluder", 0, 64, 6);
+}
+
 TEST(EeeEvents, IrrationalEndsFromATiltedOccluder) {
   // An occluder crossing the family's lines obliquely: its edges give EEEE ends in Q(sqrt D).
   Paraboloid p;
