@@ -184,7 +184,9 @@ std::optional<EeeEvent> eee_event(const Scene& scene, const SceneAdjacency& adj,
   }
   for (int i = 0; i < 3; ++i)
     for (int j = i + 1; j < 3; ++j)
-      if (orient3d(A[i], B[i], A[j], B[j]) == Sign::Zero) return std::nullopt;  // coplanar supporting lines
+      if (orient3d(scene.vertices[E[i]->v[0]], scene.vertices[E[i]->v[1]], scene.vertices[E[j]->v[0]],
+                   scene.vertices[E[j]->v[1]]) == Sign::Zero)
+        return std::nullopt;  // coplanar supporting lines (exact filtered test on the input doubles)
   const Family f(A, B);
 
   // ---- Segment bounds and tangency: rational breakpoints, decided exactly at each and between them.
