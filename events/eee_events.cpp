@@ -203,7 +203,6 @@ std::optional<EeeEvent> eee_event(const Scene& scene, const SceneAdjacency& adj,
       // Plane of L(t) and l_i: through l_i and another point of L(t): Q2 for E1, P(t) for E2 and E3.
       const PVec other = i == 0 ? f.num[1] - f.den[1] * pconst(A[0]) : f.P - pconst(A[i]);
       tangency.push_back({i, dot(cross(pconst(f.D[i]), other), W)});
-      tangency.back().edge = i;
     }
   }
   std::vector<std::int64_t> tangency_triangle;
@@ -321,8 +320,8 @@ std::optional<EeeEvent> eee_event(const Scene& scene, const SceneAdjacency& adj,
   // Normal of plane(P(t), l2) (a VEE line through a point W has W in it).
   const PVec plane_p_l2 = cross(pconst(f.D[1]), f.P - pconst(A[1]));
   std::vector<Facet> facets;
-  // Facets of H (pairs of points' planes through a third point with all of H on one side); only worth their
-  // cost when there are many candidates.
+  // Facet planes of conv(H): planes through three non-collinear points of H with all of H on one closed side
+  // (computed only when there are many candidates: they cost ~100 exact orientation tests).
   auto compute_facets = [&]() {
     for (int a = 0; a < 6; ++a)
       for (int b2 = a + 1; b2 < 6; ++b2)
