@@ -525,7 +525,7 @@ TEST(EeeEvents, RandomScenesAgainstOracle) {
     const int kind = scene % 3;
     const Scene s = random_scene(rng, kind);
     const CheckCounts c = check_scene(s, "random scene " + std::to_string(scene) + " kind " + std::to_string(kind),
-                                      40, 16, 100 + scene);
+                                      30, 16, 100 + scene);
     total.add(c);
     if (::testing::Test::HasFailure()) break;
   }
@@ -583,6 +583,36 @@ TEST(EeeEvents, DegenerateScenesAgainstOracle) {
   std::printf("EEE degenerate: %d triples, %d events, %d intervals, %d irrational ends\n", total.triples,
               total.events, total.intervals, total.irrational_ends);
   for (const auto& [k, n] : total.causes) std::printf("  end cause %s: %d\n", k.c_str(), n);
+}
+
+TEST(EeeEvents, NearlyDegenerateScenesAgainstOracle) {
+  // Grid configurations perturbed by ~1e-12: nearly coplanar edges, nearly concurrent lines, breakpoints a few
+  // ulps apart (exercises exact comparisons in Q(sqrt D) and rational sampling of tiny gaps).
+  std::mt19937 rng(31337);
+  std::uniform_int_distribution<int> coord(-1, 1), ntri(5, 8);
+  std::uniform_real_distribution<double> tiny(-1e-12, 1e-12);
+  CheckCounts total;
+  for (int scene = 0; scene < 12; ++scene) {
+    std::vector<Point3> v;
+    std::vector<std::array<int, 3>> t;
+    const int n = ntri(rng);
+    while (static_cast<int>(t.size()) < n) {
+      const int b = static_cast<int>(v.size());
+      for (int q = 0; q < 3; ++q)
+        v.push_back({coord(rng) + tiny(rng), coord(rng) + tiny(rng), coord(rng) + 1 + tiny(rng)});
+      if (collinear(v[b], v[b + 1], v[b + 2])) {
+        v.resize(b);
+        continue;
+      }
+      t.push_back({b, b + 1, b + 2});
+    }
+    const Scene s = make_scene(v, t);
+    total.add(check_scene(s, "nearly degenerate scene " + std::to_string(scene), 20, 16, 1300 + scene));
+    if (::testing::Test::HasFailure()) break;
+  }
+  EXPECT_GT(total.events, 5);
+  std::printf("EEE nearly degenerate: %d triples, %d events, %d intervals, %d irrational ends\n", total.triples,
+              total.events, total.intervals, total.irrational_ends);
 }
 
 TEST(EeeEvents, LargerRandomScenesAgainstOracle) {
