@@ -511,11 +511,14 @@ void eee_segment_ends(const Scene& scene, const SpatialIndex& spatial, const Box
 std::string root_number_to_string(const RootNumber& x) {
   Exact q;
   if (root_number_rational(x, &q)) return to_rational_string(q);
+  // a0 + a1 sqrt(n/d) = a0 + (a1/d) sqrt(n d): written with an integer radicand.
+  const Exact r = x.root();
+  const Exact c(r.numerator() * r.denominator());
+  const Exact b = x.a1() / Exact(r.denominator());
   std::string s = to_rational_string(x.a0());
-  const Exact b = x.a1();
   s += CGAL::sign(b) < 0 ? "-" : "+";
   s += to_rational_string(CGAL::sign(b) < 0 ? Exact(-b) : b);
-  s += "*sqrt(" + to_rational_string(x.root()) + ")";
+  s += "*sqrt(" + to_rational_string(c) + ")";
   return s;
 }
 

@@ -214,6 +214,24 @@ std::vector<double> approximate_change_points(const Scene& s, const std::array<s
   return out;
 }
 
+// Parses root_number_to_string's "a+b*sqrt(c)" / "a-b*sqrt(c)" back (test-side parser; c must be an integer).
+RootNumber parse_root_text(const std::string& text) {
+  // parse_rational reads a plain integer as a double literal: give it "n/1" to keep big integers exact.
+  auto parse_rational = [](const std::string& t) {
+    return exactvis::parse_rational(t.find('/') == std::string::npos ? t + "/1" : t);
+  };
+  const std::size_t star = text.find("*sqrt(");
+  if (star == std::string::npos) return RootNumber(parse_rational(text));
+  std::size_t sign = text.find_last_of("+-", star);
+  while (sign > 0 && (text[sign - 1] == 'e' || text[sign - 1] == 'E')) sign = text.find_last_of("+-", sign - 1);
+  const Exact a = parse_rational(text.substr(0, sign));
+  Exact b = parse_rational(text.substr(sign + 1, star - sign - 1));
+  if (text[sign] == '-') b = -b;
+  const std::string c_text = text.substr(star + 6, text.size() - star - 7);
+  EXPECT_EQ(c_text.find('/'), std::string::npos) << text << ": radicand not an integer";
+  return RootNumber(a, b, parse_rational(c_text));
+}
+
 struct CheckCounts {
   int triples = 0, events = 0, intervals = 0, samples = 0, irrational_ends = 0;
   double eee_seconds = 0;  // time inside eee_event (printed, never asserted)
@@ -275,6 +293,7 @@ void check_triple(const Scene& s, const SceneAdjacency& adj, const OccluderIndex
       for (const auto* x : {&iv.t0, &iv.t1}) {
         Exact q;
         if (!root_number_rational(*x, &q)) ++counts.irrational_ends;
+        EXPECT_TRUE(parse_root_text(root_number_to_string(*x)) == *x) << tag << ": " << root_number_to_string(*x);
         if (*x > RootNumber(0)) samples.push_back(just_below(*x));
         if (*x < RootNumber(1)) samples.push_back(just_above(*x));
       }
@@ -679,6 +698,8 @@ TEST(EeeEvents, RootNumberText) {
   EXPECT_EQ(root_number_to_string(RootNumber(Exact(2))), "2");
   EXPECT_EQ(root_number_to_string(RootNumber(Exact(1, 2), Exact(-1, 3), Exact(5))), "1/2-1/3*sqrt(5)");
   EXPECT_EQ(root_number_to_string(RootNumber(Exact(0), Exact(2), Exact(7))), "0+2*sqrt(7)");
+  // A rational radicand is written as an integer one: 1 + sqrt(5/3) = 1 + (1/3) sqrt(15).
+  EXPECT_EQ(root_number_to_string(RootNumber(Exact(1), Exact(1), Exact(5, 3))), "1+1/3*sqrt(15)");
 }
 
 }  // namespace
