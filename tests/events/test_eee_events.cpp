@@ -11,6 +11,7 @@
 #include <tbb/parallel_for.h>
 
 #include <chrono>
+#include <cstdlib>
 #include <cmath>
 #include <functional>
 #include <map>
@@ -537,10 +538,17 @@ Scene random_scene(std::mt19937& rng, int kind) {
   return make_scene(v, t);
 }
 
+// Fixed seed and size; EXACTVIS_EEE_SEED / EXACTVIS_EEE_SCENES override them for longer exploratory runs.
+int env_int(const char* name, int fallback) {
+  const char* v = std::getenv(name);
+  return v ? std::atoi(v) : fallback;
+}
+
 TEST(EeeEvents, RandomScenesAgainstOracle) {
-  std::mt19937 rng(20261201);
+  std::mt19937 rng(static_cast<unsigned>(env_int("EXACTVIS_EEE_SEED", 20261201)));
   CheckCounts total;
-  for (int scene = 0; scene < 100; ++scene) {
+  const int scenes = env_int("EXACTVIS_EEE_SCENES", 100);
+  for (int scene = 0; scene < scenes; ++scene) {
     const int kind = scene % 3;
     const Scene s = random_scene(rng, kind);
     const CheckCounts c = check_scene(s, "random scene " + std::to_string(scene) + " kind " + std::to_string(kind),
