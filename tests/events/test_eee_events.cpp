@@ -580,10 +580,11 @@ TEST(EeeEvents, DegenerateScenesAgainstOracle) {
   // Tiny integer grids ({-1, 0, 1}^3 and {0, 1, 2}^3 halved) give many coincidences: occluders through
   // generator endpoints, shared positions with different vertex ids (duplicates), coplanar faces, edges on one
   // regulus, lines through several vertices; closed tetrahedra on the grid test the edge rule with two faces.
-  std::mt19937 rng(4242);
+  std::mt19937 rng(static_cast<unsigned>(env_int("EXACTVIS_EEE_SEED", 4242)));
   std::uniform_int_distribution<int> coord(-1, 1), ntri(5, 9), coin(0, 2);
   CheckCounts total;
-  for (int scene = 0; scene < 60; ++scene) {
+  const int scenes = env_int("EXACTVIS_EEE_SCENES", 60);
+  for (int scene = 0; scene < scenes; ++scene) {
     std::vector<Point3> v;
     std::vector<std::array<int, 3>> t;
     const double scale = scene % 2 ? 1.0 : 0.5;
@@ -624,11 +625,12 @@ TEST(EeeEvents, DegenerateScenesAgainstOracle) {
 TEST(EeeEvents, NearlyDegenerateScenesAgainstOracle) {
   // Grid configurations perturbed by ~1e-12: nearly coplanar edges, nearly concurrent lines, breakpoints a few
   // ulps apart (exercises exact comparisons in Q(sqrt D) and rational sampling of tiny gaps).
-  std::mt19937 rng(31337);
+  std::mt19937 rng(static_cast<unsigned>(env_int("EXACTVIS_EEE_SEED", 31337)));
   std::uniform_int_distribution<int> coord(-1, 1), ntri(5, 8);
   std::uniform_real_distribution<double> tiny(-1e-12, 1e-12);
   CheckCounts total;
-  for (int scene = 0; scene < 12; ++scene) {
+  const int scenes = env_int("EXACTVIS_EEE_SCENES", 12);
+  for (int scene = 0; scene < scenes; ++scene) {
     std::vector<Point3> v;
     std::vector<std::array<int, 3>> t;
     const int n = ntri(rng);
@@ -653,10 +655,11 @@ TEST(EeeEvents, NearlyDegenerateScenesAgainstOracle) {
 
 TEST(EeeEvents, LargerRandomScenesAgainstOracle) {
   // 30 mid-sized triangles: many occluder candidates per triple (exercises the exact hull-facet culling).
-  std::mt19937 rng(77);
+  std::mt19937 rng(static_cast<unsigned>(env_int("EXACTVIS_EEE_SEED", 77)));
   std::uniform_real_distribution<double> real(-4, 4), off(-1.5, 1.5);
   CheckCounts total;
-  for (int scene = 0; scene < 8; ++scene) {
+  const int scenes = env_int("EXACTVIS_EEE_SCENES", 8);
+  for (int scene = 0; scene < scenes; ++scene) {
     std::vector<Point3> v;
     std::vector<std::array<int, 3>> t;
     while (t.size() < 30) {
