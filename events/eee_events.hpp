@@ -16,6 +16,7 @@
 #include "kernel/number_types.hpp"
 #include "kernel/root_number.hpp"
 #include "kernel/scene.hpp"
+#include "kernel/vec3.hpp"
 
 #include <array>
 #include <cstdint>
@@ -26,6 +27,7 @@
 namespace exactvis {
 
 class OccluderIndex;
+class SpatialIndex;
 
 // Why an EEE free interval ends at a parameter.
 struct EeeEnd {
@@ -48,10 +50,12 @@ struct EeeEnd {
 struct EeeInterval {
   RootNumber t0, t1;  // 0 <= t0 < t1 <= 1, exact (rational or a + b sqrt(c))
   EeeEnd end0, end1;
-  // Objects at both ends of the maximal free segment of the sample line L(sample_t) (sample_t rational,
-  // strictly inside (t0, t1)): stable ids of the first triangles hit beyond the two outermost generators,
-  // -1 when the line leaves the scene. `front` is on the side of increasing position along the direction
-  // from P(t) towards E2's meeting point... (exact convention in docs/theory.md).
+  // sample_t: a rational strictly inside (t0, t1), set by eee_event.
+  // Objects at both ends of the maximal free segment of the sample line L(sample_t), filled by
+  // eee_segment_ends (not by eee_event): stable ids of the first closed scene triangles hit by the open rays
+  // beyond the two outermost generator points, -1 when the ray leaves the scene. The line is oriented by
+  // d = Q2 - P (from its point P on E1 towards its point Q2 on E2); `front` is the ray leaving the outermost
+  // generator point in direction +d, `back` the one leaving the other outermost point in direction -d.
   Exact sample_t;
   std::int64_t end_object_front = -1, end_object_back = -1;
 };
@@ -73,8 +77,25 @@ struct EeeStats {
 std::optional<EeeEvent> eee_event(const Scene& scene, const SceneAdjacency& adj, const OccluderIndex& index,
                                   int e1, int e2, int e3, EeeStats* stats = nullptr);
 
-// The exact text of a parameter: "num/den" (or an integer) when rational, else "a+b*sqrt(c)" with a, b, c
-// rationals written the same way (c > 0 not a square, b != 0). docs/cli.md documents this form.
+// Fills end_object_front / end_object_back of every interval of `event` (rays from the sample line, see
+// EeeInterval), exactly, with events/ray_first_hit.hpp. `box` = bounding_box(scene).
+void eee_segment_ends(const Scene& scene, const SpatialIndex& spatial, const Box3& box, EeeEvent& event);
+
+// The exact points of the line L(t) of an EEE event (for output and re-checking): its point on E1, and its
+// points on the supporting lines of E2 and E3 (std::nullopt when the line is parallel to that edge's line,
+// t a Singular end). `direction` is Q2 - P scaled by a nonzero factor (always defined). Coordinates in the
+// field of t (t rational: rational; else the Q(sqrt D) of t). Requires t in [0, 1] and the edges of a valid
+// triple (as in an EeeEvent).
+struct EeeLinePoints {
+  Vec3<RootNumber> on_e1;
+  std::optional<Vec3<RootNumber>> on_e2, on_e3;
+  Vec3<RootNumber> direction;
+};
+EeeLinePoints eee_line_points(const Scene& scene, const EeeEvent& event, const RootNumber& t);
+
+// The exact text of a parameter: "num/den" (or an integer) when rational, else "a+b*sqrt(c)" or
+// "a-b*sqrt(c)" with a, b, c rationals written the same way (b > 0, c > 0 an integer that is not a square).
+// docs/cli.md documents this form.
 std::string root_number_to_string(const RootNumber& x);
 
 }  // namespace exactvis

@@ -48,4 +48,16 @@ std::vector<int> OccluderIndex::triangles_meeting(const Point3& a, const Point3&
   return out;
 }
 
+std::vector<int> OccluderIndex::triangles_in_box(const Box3& box) const {
+  std::vector<int> out;
+  if (impl_->tris.empty() || box.empty()) return out;
+  std::vector<TriIt> hits;
+  impl_->tree.all_intersected_primitives(CGAL::Bbox_3(box.lo.x, box.lo.y, box.lo.z, box.hi.x, box.hi.y, box.hi.z),
+                                         std::back_inserter(hits));
+  out.reserve(hits.size());
+  for (const auto& it : hits) out.push_back(static_cast<int>(it - impl_->tris.cbegin()));
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
 }  // namespace exactvis

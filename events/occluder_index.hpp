@@ -18,6 +18,9 @@ class OccluderIndex {
   // Indices into Scene::triangles of all triangles meeting the closed triangle (a, b, c) (not collinear),
   // in increasing order. Thread-safe.
   std::vector<int> triangles_meeting(const Point3& a, const Point3& b, const Point3& c) const;
+  // Indices into Scene::triangles of all triangles meeting the closed box (lo <= hi componentwise), in
+  // increasing order. Conservative and exact like triangles_meeting (the box corners are doubles). Thread-safe.
+  std::vector<int> triangles_in_box(const Box3& box) const;
 
  private:
   struct Impl;
