@@ -102,8 +102,8 @@ std::vector<std::string> enumerated(const Scene& s, const std::vector<int>& ligh
 }
 
 TEST(EeeEnumeration, SameEventsAsAllTriplesOnRandomSoups) {
-  std::size_t total = 0;
-  for (unsigned seed = 1; seed <= 25; ++seed) {
+  std::size_t total = 0;  // ~800 triples per scene
+  for (unsigned seed = 1; seed <= 10; ++seed) {
     const Scene s = random_soup(seed, 6, 6);
     const auto want = all_triples(s, {});
     EXPECT_EQ(enumerated(s, {}), want) << "seed " << seed;
@@ -126,7 +126,7 @@ TEST(EeeEnumeration, SameEventsAsAllTriplesWithSharedVertices) {
 // Light restriction: the light edge as an outer edge and as the middle edge (the shadow-box query).
 TEST(EeeEnumeration, LightRestrictedSameAsAllTriplesWithALightEdge) {
   std::size_t total = 0;
-  for (unsigned seed = 1; seed <= 25; ++seed) {
+  for (unsigned seed = 1; seed <= 10; ++seed) {
     const Scene s = random_soup(700 + seed, 7, 8);
     const std::vector<int> light{static_cast<int>(seed % 7)};
     const auto want = all_triples(s, light);
@@ -138,8 +138,9 @@ TEST(EeeEnumeration, LightRestrictedSameAsAllTriplesWithALightEdge) {
 
 TEST(EeeEnumeration, SameEventsAsAllTriplesOnGeneratedScenes) {
   std::size_t total = 0;
-  for (const char* kind : {"town", "forest", "room", "random"}) {
-    const Scene s = generate_scene(kind, 24, 3);
+  // Closed meshes (trunks, crowns, buildings): silhouette-only events, many coplanar edge pairs.
+  for (const char* kind : {"town", "forest", "room"}) {
+    const Scene s = generate_scene(kind, 16, 3);
     const auto want = all_triples(s, {});
     EXPECT_EQ(enumerated(s, {}), want) << kind;
     total += want.size();
