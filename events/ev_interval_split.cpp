@@ -89,9 +89,11 @@ std::vector<EvInterval> split_ev_interval(const Scene& scene, const SpatialIndex
   const Vec3<Exact> a = to_rational(pa) - V, b = to_rational(pb) - V;
   const Vec3<Exact> n = cross(a, b);
   const Exact nn = dot(n, n);
+  // alpha = ((X - V) x b) . n / |n|^2 = (X - V) . (b x n) / |n|^2, beta = (X - V) . (n x a) / |n|^2.
+  const Vec3<Exact> ca = (Exact(1) / nn) * cross(b, n), cb = (Exact(1) / nn) * cross(n, a);
   auto coords = [&](const Vec3<Exact>& x) {
     const Vec3<Exact> r = x - V;
-    return P2{dot(cross(r, b), n) / nn, dot(cross(a, r), n) / nn};
+    return P2{dot(r, ca), dot(r, cb)};
   };
 
   // Candidate triangles of both sides and their segments in the wedge plane.
@@ -106,45 +108,67 @@ std::vector<EvInterval> split_ev_interval(const Scene& scene, const SpatialIndex
     const int ti = static_cast<int>(ti64);
     const auto& t = scene.triangles[ti];
     if (has_vertex(t, vertex) || (has_vertex(t, edge[0]) && has_vertex(t, edge[1]))) continue;
-    std::array<Vec3<Exact>, 3> w;
+    // Side of the wedge plane: the filtered orient3d first (cheap), rationals only for triangles crossing it.
     std::array<int, 3> o;
+    for (int k = 0; k < 3; ++k) o[k] = static_cast<int>(orient3d(pv, pa, pb, scene.corner(t, k)));
+    if ((o[0] > 0 && o[1] > 0 && o[2] > 0) || (o[0] < 0 && o[1] < 0 && o[2] < 0)) continue;
+    std::array<Vec3<Exact>, 3> w;
+    std::array<P2, 3> wc;
     for (int k = 0; k < 3; ++k) {
       w[k] = to_rational(scene.corner(t, k));
-      o[k] = CGAL::sign(dot(w[k] - V, n));
+      wc[k] = coords(w[k]);
     }
-    if ((o[0] > 0 && o[1] > 0 && o[2] > 0) || (o[0] < 0 && o[1] < 0 && o[2] < 0)) continue;
+    // Keep only segments whose parameter range can meet [t0, t1] (t is monotone along a segment on which
+    // sigma = alpha + beta keeps its sign; otherwise keep it).
     auto push = [&](const P2& p, const P2& q) {
+      const int sp = CGAL::sign(p.alpha + p.beta), sq = CGAL::sign(q.alpha + q.beta);
+      if (sp != 0 && sp == sq) {
+        const Exact tp = p.beta / (p.alpha + p.beta), tq = q.beta / (q.alpha + q.beta);
+        if (std::max(tp, tq) < interval.t0 || std::min(tp, tq) > interval.t1) return;
+      }
       segs_of[ti].push_back(segs.size());
       segs.push_back({ti, p, q});
     };
     if (o[0] == 0 && o[1] == 0 && o[2] == 0) {  // coplanar: its three edges
-      for (int k = 0; k < 3; ++k) push(coords(w[k]), coords(w[(k + 1) % 3]));
+      for (int k = 0; k < 3; ++k) push(wc[k], wc[(k + 1) % 3]);
       continue;
     }
-    std::vector<Vec3<Exact>> pts;
+    std::vector<P2> pts;
     for (int k = 0; k < 3; ++k) {
-      if (o[k] == 0) pts.push_back(w[k]);
+      if (o[k] == 0) pts.push_back(wc[k]);
       const int j = (k + 1) % 3;
-      if (o[k] * o[j] < 0) {
+      if (o[k] * o[j] < 0) {  // the edge crosses the plane: interpolate (coordinates are affine)
         const Exact fk = dot(w[k] - V, n), fj = dot(w[j] - V, n);
-        pts.push_back(w[k] + (fk / (fk - fj)) * (w[j] - w[k]));
+        const Exact lambda = fk / (fk - fj);
+        pts.push_back({wc[k].alpha + lambda * (wc[j].alpha - wc[k].alpha), wc[k].beta + lambda * (wc[j].beta - wc[k].beta)});
       }
     }
     if (pts.empty()) continue;
-    push(coords(pts.front()), coords(pts.back()));
+    push(pts.front(), pts.back());
   }
 
-  // (a) endpoints of all segments.
-  std::vector<Exact> bps{interval.t0, interval.t1};
-  auto add_bp = [&](std::vector<Exact>& out, const P2& x, const Exact& lo, const Exact& hi) {
-    if (const auto t = param_of(x); t && *t > lo && *t < hi) out.push_back(*t);
+  // (a) endpoints of all segments. Endpoints strictly between V and E (0 < sigma < 1) cannot lie on a line
+  // of a free interval's interior.
+  struct Endpoint {
+    Exact t, sigma;
+    int triangle;
   };
-  for (const auto& s : segs) {
-    add_bp(bps, s.p, interval.t0, interval.t1);
-    add_bp(bps, s.q, interval.t0, interval.t1);
+  std::vector<Endpoint> eps;
+  auto add_ep = [&](const P2& x, int tri) {
+    const Exact sigma = x.alpha + x.beta;
+    if (!(sigma >= 1 || CGAL::sign(sigma) < 0)) return;
+    const Exact t = x.beta / sigma;
+    if (t > interval.t0 && t < interval.t1) eps.push_back({t, sigma, tri});
+  };
+  for (const auto& sg : segs) {
+    add_ep(sg.p, sg.triangle);
+    add_ep(sg.q, sg.triangle);
   }
-  std::sort(bps.begin(), bps.end());
-  bps.erase(std::unique(bps.begin(), bps.end()), bps.end());
+  std::sort(eps.begin(), eps.end(), [](const Endpoint& x, const Endpoint& y) { return x.t < y.t; });
+  std::vector<Exact> bps{interval.t0};
+  for (const auto& e : eps)
+    if (e.t != bps.back()) bps.push_back(e.t);
+  bps.push_back(interval.t1);
 
   struct Piece {
     Exact t0, t1;
@@ -158,11 +182,15 @@ std::vector<EvInterval> split_ev_interval(const Scene& scene, const SpatialIndex
     const RayHit g = ray_first_hit(scene, spatial, box, V, -d);
     return std::pair<int, int>{f.triangle, g.triangle};
   };
-  // (b) crossings of the end objects' segments with other segments, inside (lo, hi).
-  auto crossings = [&](int tri, const Exact& lo, const Exact& hi, std::vector<Exact>& out) {
-    const auto it = segs_of.find(tri);
-    if (it == segs_of.end()) return;
-    for (std::size_t fi : it->second) {
+  // (b) crossings of a triangle's segments with the other segments, inside (t0, t1); cached per triangle.
+  std::map<int, std::vector<Exact>> crossing_cache;
+  auto crossings_of = [&](int tri) -> const std::vector<Exact>& {
+    auto [it, inserted] = crossing_cache.try_emplace(tri);
+    if (!inserted) return it->second;
+    std::vector<Exact>& out = it->second;
+    const auto sit = segs_of.find(tri);
+    if (sit == segs_of.end()) return out;
+    for (std::size_t fi : sit->second) {
       const Seg& f = segs[fi];
       const P2 d1 = sub(f.q, f.p);
       for (const Seg& g : segs) {
@@ -173,30 +201,80 @@ std::vector<EvInterval> split_ev_interval(const Scene& scene, const SpatialIndex
         const P2 w = sub(g.p, f.p);
         const Exact u = cross2(w, d2) / den, v = cross2(w, d1) / den;
         if (u < 0 || u > 1 || v < 0 || v > 1) continue;
-        add_bp(out, P2{f.p.alpha + u * d1.alpha, f.p.beta + u * d1.beta}, lo, hi);
+        if (const auto t = param_of(P2{f.p.alpha + u * d1.alpha, f.p.beta + u * d1.beta});
+            t && *t > interval.t0 && *t < interval.t1)
+          out.push_back(*t);
       }
     }
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+    return out;
   };
-  std::vector<Piece> pieces;
-  std::vector<std::pair<Exact, Exact>> todo;
-  for (std::size_t i = bps.size() - 1; i > 0; --i) todo.emplace_back(bps[i - 1], bps[i]);  // stack: in order
-  while (!todo.empty()) {
-    const auto [lo, hi] = todo.back();
-    todo.pop_back();
-    const Exact mid = (lo + hi) / 2;
-    const auto [f, g] = objects_at(mid);
-    std::vector<Exact> more;
-    if (f >= 0) crossings(f, lo, hi, more);
-    if (g >= 0) crossings(g, lo, hi, more);
-    if (!more.empty()) {
-      more.push_back(lo);
-      more.push_back(hi);
-      std::sort(more.begin(), more.end());
-      more.erase(std::unique(more.begin(), more.end()), more.end());
-      for (std::size_t i = more.size() - 1; i > 0; --i) todo.emplace_back(more[i - 1], more[i]);
-      continue;
+  auto crossings = [&](int tri, const Exact& lo, const Exact& hi, std::vector<Exact>& out) {
+    if (tri < 0) return;
+    const auto& all = crossings_of(tri);
+    for (auto it = std::upper_bound(all.begin(), all.end(), lo); it != all.end() && *it < hi; ++it) out.push_back(*it);
+  };
+  // Position sigma where line L(t) meets the one segment of (non-coplanar) triangle `tri`, when it crosses it
+  // strictly inside; std::nullopt otherwise (no such segment, coplanar triangle, an endpoint on L(t), ...).
+  auto sigma_on = [&](int tri, const Exact& t) -> std::optional<Exact> {
+    const auto it = segs_of.find(tri);
+    if (it == segs_of.end() || it->second.size() != 1) return std::nullopt;
+    const Seg& sg = segs[it->second[0]];
+    const Exact gp = sg.p.beta - t * (sg.p.alpha + sg.p.beta), gq = sg.q.beta - t * (sg.q.alpha + sg.q.beta);
+    if (CGAL::sign(gp) * CGAL::sign(gq) >= 0) return std::nullopt;
+    const Exact sp = sg.p.alpha + sg.p.beta, sq = sg.q.alpha + sg.q.beta;
+    return sp + (gp / (gp - gq)) * (sq - sp);
+  };
+  // Can the objects change at breakpoint t (an endpoint breakpoint), given the objects (f, g) just before it?
+  // Not if every endpoint there lies strictly behind the current first hit of its side, whose segment crosses
+  // L(t) strictly inside (the change would need a crossing with it: those are split separately).
+  std::size_t ep_pos = 0;
+  auto may_change_at = [&](const Exact& t, int f, int g) {
+    while (ep_pos < eps.size() && eps[ep_pos].t < t) ++ep_pos;
+    const std::optional<Exact> sf = f >= 0 ? sigma_on(f, t) : std::nullopt;
+    const std::optional<Exact> sg = g >= 0 ? sigma_on(g, t) : std::nullopt;
+    for (std::size_t k = ep_pos; k < eps.size() && eps[k].t == t; ++k) {
+      const Endpoint& e = eps[k];
+      if (CGAL::sign(e.sigma) > 0) {  // beyond E
+        if (!sf || e.triangle == f || !(*sf < e.sigma)) return true;
+      } else {  // behind V
+        if (!sg || e.triangle == g || !(*sg > e.sigma)) return true;
+      }
     }
-    pieces.push_back({lo, hi, f >= 0 ? scene.triangles[f].id : -1, g >= 0 ? scene.triangles[g].id : -1});
+    return false;
+  };
+
+  std::vector<Piece> pieces;
+  std::vector<std::pair<int, int>> piece_objects;  // scene indices of the last piece's objects
+  for (std::size_t b = 0; b + 1 < bps.size(); ++b) {
+    // Sub-pieces of [bps[b], bps[b + 1]]: split at crossings of the current objects, recursively.
+    std::vector<std::pair<Exact, Exact>> todo{{bps[b], bps[b + 1]}};
+    bool first = true;
+    while (!todo.empty()) {
+      const auto [lo, hi] = todo.back();
+      todo.pop_back();
+      std::pair<int, int> fg;
+      if (first && b > 0 && !may_change_at(lo, piece_objects.back().first, piece_objects.back().second))
+        fg = piece_objects.back();
+      else
+        fg = objects_at((lo + hi) / 2);
+      first = false;
+      std::vector<Exact> more;
+      crossings(fg.first, lo, hi, more);
+      crossings(fg.second, lo, hi, more);
+      if (!more.empty()) {
+        more.push_back(lo);
+        more.push_back(hi);
+        std::sort(more.begin(), more.end());
+        more.erase(std::unique(more.begin(), more.end()), more.end());
+        for (std::size_t i = more.size() - 1; i > 0; --i) todo.emplace_back(more[i - 1], more[i]);
+        continue;
+      }
+      pieces.push_back({lo, hi, fg.first >= 0 ? scene.triangles[fg.first].id : -1,
+                        fg.second >= 0 ? scene.triangles[fg.second].id : -1});
+      piece_objects.push_back(fg);
+    }
   }
 
   // Merge equal neighbours; sample at the merged midpoint when the objects there are the piece's.
