@@ -101,5 +101,44 @@ TEST(EventSurfaces, WrittenAndReadBackWithArrays) {
   std::filesystem::remove(path);
 }
 
+// EEE ruled strips: three skew bars (as in test_events_cli.cpp); every EEE interval gives 2 n triangles of
+// kind 1 carrying the event's edges, and all points stay in the scene box.
+TEST(EventSurfaces, EeeStripsReadBack) {
+  Scene s;
+  s.vertices = {{-4, 0, 0}, {4, 0, 0}, {0, -1, -3}, {0, -4, 4}, {0, 4, 4}, {-3, 0, 5}, {-4, -4, 8}, {4, 4, 8}, {3, -3, 11}};
+  for (int i = 0; i < 3; ++i) s.triangles.push_back({i, {3 * i, 3 * i + 1, 3 * i + 2}, 0});
+  s.objects.push_back({"bars"});
+  s.faces_read = 3;
+  const EeeResult eee = enumerate_eee_events(s);
+  ASSERT_GT(eee.events.size(), 0u);
+  std::size_t intervals = 0;
+  for (const auto& e : eee.events) intervals += e.intervals.size();
+  const auto path = std::filesystem::temp_directory_path() / "exactvis_test_eee_surfaces.vtp";
+  const int n = 3;
+  write_event_surfaces_vtp(path.string(), s, EvResult{}, eee, n);
+  vtkNew<vtkXMLPolyDataReader> reader;
+  reader->SetFileName(path.string().c_str());
+  reader->Update();
+  vtkPolyData* poly = reader->GetOutput();
+  ASSERT_EQ(static_cast<std::size_t>(poly->GetNumberOfCells()), 2 * n * intervals);
+  vtkDataArray* kind = poly->GetCellData()->GetArray("kind");
+  vtkDataArray* event = poly->GetCellData()->GetArray("event");
+  vtkDataArray* e2 = poly->GetCellData()->GetArray("edge2");
+  ASSERT_NE(kind, nullptr);
+  for (vtkIdType c = 0; c < poly->GetNumberOfCells(); ++c) {
+    EXPECT_EQ(kind->GetTuple1(c), 1);
+    EXPECT_EQ(e2->GetTuple1(c), eee.events[static_cast<std::size_t>(event->GetTuple1(c))].edges[1][0]);
+  }
+  for (vtkIdType p = 0; p < poly->GetNumberOfPoints(); ++p) {
+    double x[3];
+    poly->GetPoint(p, x);
+    EXPECT_GE(x[0], -4 - 1e-9);
+    EXPECT_LE(x[0], 4 + 1e-9);
+    EXPECT_GE(x[2], -3 - 1e-9);
+    EXPECT_LE(x[2], 11 + 1e-9);
+  }
+  std::filesystem::remove(path);
+}
+
 }  // namespace
 }  // namespace exactvis
