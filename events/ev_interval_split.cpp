@@ -232,6 +232,12 @@ std::vector<EvInterval> split_ev_interval(const Scene& scene, const SpatialIndex
   std::size_t ep_pos = 0;
   auto may_change_at = [&](const Exact& t, int f, int g) {
     while (ep_pos < eps.size() && eps[ep_pos].t < t) ++ep_pos;
+    // A crossing of a current object's segment exactly at t (not inside any piece) also changes it.
+    for (int tri : {f, g}) {
+      if (tri < 0) continue;
+      const auto& c = crossings_of(tri);
+      if (std::binary_search(c.begin(), c.end(), t)) return true;
+    }
     const std::optional<Exact> sf = f >= 0 ? sigma_on(f, t) : std::nullopt;
     const std::optional<Exact> sg = g >= 0 ? sigma_on(g, t) : std::nullopt;
     for (std::size_t k = ep_pos; k < eps.size() && eps[k].t == t; ++k) {
