@@ -3,113 +3,32 @@
 #include "events/occluder_index.hpp"
 #include "events/ray_first_hit.hpp"
 #include "kernel/predicates.hpp"
+#include "kernel/quadratic_polynomial.hpp"
 #include "kernel/rational_between.hpp"
 #include "kernel/segment_triangle_intersection.hpp"
 #include "kernel/spatial_index.hpp"
 
-#include <gmp.h>
-
 #include <algorithm>
+#include <cmath>
 #include <sstream>
 #include <stdexcept>
 
 namespace exactvis {
 namespace {
 
-// A polynomial of degree <= 2 in the family parameter t, exact rational coefficients c[0] + c[1] t + c[2] t^2.
-// Every quantity of the EEE family used here has degree <= 2 (docs/theory.md section 6).
-struct Poly {
-  std::array<Exact, 3> c{Exact(0), Exact(0), Exact(0)};
-  Poly() = default;
-  Poly(int v) { c[0] = Exact(v); }  // NOLINT: Vec3<Poly> default-constructs from 0
-  Poly(const Exact& v) { c[0] = v; }  // NOLINT
-  static Poly linear(const Exact& c0, const Exact& c1) {
-    Poly p;
-    p.c[0] = c0;
-    p.c[1] = c1;
-    return p;
-  }
-  int degree() const {
-    for (int k = 2; k >= 0; --k)
-      if (!CGAL::is_zero(c[k])) return k;
-    return -1;  // identically zero
-  }
-  Exact operator()(const Exact& t) const { return (c[2] * t + c[1]) * t + c[0]; }
-};
-Poly operator+(const Poly& a, const Poly& b) {
-  Poly r;
-  for (int k = 0; k < 3; ++k) r.c[k] = a.c[k] + b.c[k];
-  return r;
-}
-Poly operator-(const Poly& a, const Poly& b) {
-  Poly r;
-  for (int k = 0; k < 3; ++k) r.c[k] = a.c[k] - b.c[k];
-  return r;
-}
-Poly operator-(const Poly& a) { return Poly() - a; }
-Poly operator*(const Poly& a, const Poly& b) {
-  const int da = a.degree(), db = b.degree();
-  if (da < 0 || db < 0) return Poly();
-  if (da + db > 2) throw std::logic_error("eee_events: polynomial degree above 2");
-  Poly r;
-  for (int i = 0; i <= da; ++i)
-    for (int j = 0; j <= db; ++j) r.c[i + j] += a.c[i] * b.c[j];
-  return r;
-}
+// Every quantity of the EEE family used here is a polynomial of degree <= 2 in t (docs/theory.md section 6).
+using Poly = QuadraticPolynomial;
+using Root = RealRoot;
 
 using PVec = Vec3<Poly>;
 PVec pconst(const Vec3<Exact>& v) { return {Poly(v.x), Poly(v.y), Poly(v.z)}; }
+// Dot product with a constant vector (no polynomial products).
+Poly dotc(const PVec& a, const Vec3<Exact>& b) {
+  Poly r;
+  for (int k = 0; k < 3; ++k) r.c[k] = a.x.c[k] * b.x + a.y.c[k] * b.y + a.z.c[k] * b.z;
+  return r;
+}
 Vec3<Exact> eval(const PVec& v, const Exact& t) { return {v.x(t), v.y(t), v.z(t)}; }
-
-// One real root of a polynomial: exact, with its rational value when it is rational.
-struct Root {
-  RootNumber t;
-  bool rational = true;
-  Exact q;
-};
-
-bool perfect_square(const ExactInt& z, ExactInt* root) {
-  if (CGAL::sign(z) < 0 || !mpz_perfect_square_p(z.mpz())) return false;
-  mpz_t r;
-  mpz_init(r);
-  mpz_sqrt(r, z.mpz());
-  *root = ExactInt(r);
-  mpz_clear(r);
-  return true;
-}
-
-// All distinct real roots of p (none when p is identically zero or constant). Rational roots are returned as
-// rational RootNumbers, irrational ones as a0 + a1 sqrt(R) with R a positive non-square integer.
-std::vector<Root> real_roots(const Poly& p) {
-  std::vector<Root> out;
-  const int deg = p.degree();
-  auto rational = [&](const Exact& q) { out.push_back({RootNumber(q), true, q}); };
-  if (deg == 1) {
-    rational(-p.c[0] / p.c[1]);
-  } else if (deg == 2) {
-    const Exact disc = p.c[1] * p.c[1] - Exact(4) * p.c[2] * p.c[0];
-    const int s = CGAL::sign(disc);
-    const Exact a0 = -p.c[1] / (Exact(2) * p.c[2]);
-    if (s == 0) {
-      rational(a0);
-    } else if (s > 0) {
-      const ExactInt num = disc.numerator(), den = disc.denominator();
-      ExactInt rn, rd;
-      if (perfect_square(num, &rn) && perfect_square(den, &rd)) {
-        const Exact w = Exact(rn) / Exact(rd) / (Exact(2) * p.c[2]);
-        rational(a0 - w);
-        rational(a0 + w);
-      } else {
-        // sqrt(num/den) = sqrt(num*den) / den.
-        const Exact root(num * den);
-        const Exact a1 = Exact(1) / (Exact(den) * Exact(2) * p.c[2]);
-        out.push_back({RootNumber(a0, -a1, root), false, Exact(0)});
-        out.push_back({RootNumber(a0, a1, root), false, Exact(0)});
-      }
-    }
-  }
-  return out;
-}
 
 // A parameter where validity may change, with the cause reported if a free interval ends there.
 struct Breakpoint {
@@ -173,8 +92,8 @@ struct Family {
   // Homogeneous plane-side polynomial of the generator point k (0: P, 1: Q2, 2: Q3) w.r.t. plane n.x = c:
   // its sign times sign(den_k) (den_0 = 1) is the side of the actual point.
   Poly height(int k, const Vec3<Exact>& n, const Exact& c) const {
-    if (k == 0) return dot(pconst(n), P) - Poly(c);
-    return dot(pconst(n), num[k]) - den[k] * Poly(c);
+    if (k == 0) return dotc(P, n) - Poly(c);
+    return dotc(num[k], n) - scaled(den[k], c);
   }
 };
 
@@ -201,6 +120,39 @@ RationalLine rational_line(const Family& f, const Exact& t) {
   return r;
 }
 
+// [0, 1] minus the union of the closed invalid pieces (sorted here): the closures of the components of
+// positive length, with the causes of their ends (end_at_0 / end_at_1 at t = 0 / 1). sample_t is not set.
+std::vector<EeeInterval> free_components(std::vector<Invalid>& invalid, const EeeEnd& end_at_0,
+                                         const EeeEnd& end_at_1) {
+  std::stable_sort(invalid.begin(), invalid.end(), [](const Invalid& x, const Invalid& y) { return x.lo < y.lo; });
+  std::vector<EeeInterval> out;
+  RootNumber pos(0);
+  EeeEnd pos_end = end_at_0;
+  auto emit = [&](const RootNumber& t1, const EeeEnd& end1) {
+    EeeInterval iv;
+    iv.t0 = pos;
+    iv.t1 = t1;
+    iv.end0 = pos_end;
+    iv.end1 = end1;
+    out.push_back(std::move(iv));
+  };
+  for (const auto& iv : invalid) {
+    if (iv.lo > pos) emit(iv.lo, iv.lo_end);
+    if (iv.hi >= pos) {
+      pos = iv.hi;
+      pos_end = iv.hi_end;
+    }
+  }
+  if (pos < RootNumber(1)) emit(RootNumber(1), end_at_1);
+  return out;
+}
+
+Breakpoint breakpoint_at(const RootNumber& t, const EeeEnd& cause) {
+  Breakpoint b{t, true, Exact(0), cause};
+  b.rational = root_number_rational(t, &b.q);
+  return b;
+}
+
 struct Occluder {
   int index;
   std::int64_t id;
@@ -213,6 +165,9 @@ struct Occluder {
 std::optional<EeeEvent> eee_event(const Scene& scene, const SceneAdjacency& adj, const OccluderIndex& index,
                                   int e1, int e2, int e3, EeeStats* stats) {
   std::array<int, 3> ei{e1, e2, e3};
+  for (int e : ei)
+    if (e < 0 || e >= static_cast<int>(adj.edges.size()))
+      throw std::out_of_range("eee_event: edge index " + std::to_string(e) + " out of range");
   std::sort(ei.begin(), ei.end());
   if (ei[0] == ei[1] || ei[1] == ei[2]) return std::nullopt;
   const SceneEdge* E[3] = {&adj.edges[ei[0]], &adj.edges[ei[1]], &adj.edges[ei[2]]};
@@ -229,7 +184,9 @@ std::optional<EeeEvent> eee_event(const Scene& scene, const SceneAdjacency& adj,
   }
   for (int i = 0; i < 3; ++i)
     for (int j = i + 1; j < 3; ++j)
-      if (orient3d(A[i], B[i], A[j], B[j]) == Sign::Zero) return std::nullopt;  // coplanar supporting lines
+      if (orient3d(scene.vertices[E[i]->v[0]], scene.vertices[E[i]->v[1]], scene.vertices[E[j]->v[0]],
+                   scene.vertices[E[j]->v[1]]) == Sign::Zero)
+        return std::nullopt;  // coplanar supporting lines (exact filtered test on the input doubles)
   const Family f(A, B);
 
   // ---- Segment bounds and tangency: rational breakpoints, decided exactly at each and between them.
@@ -246,7 +203,6 @@ std::optional<EeeEvent> eee_event(const Scene& scene, const SceneAdjacency& adj,
       // Plane of L(t) and l_i: through l_i and another point of L(t): Q2 for E1, P(t) for E2 and E3.
       const PVec other = i == 0 ? f.num[1] - f.den[1] * pconst(A[0]) : f.P - pconst(A[i]);
       tangency.push_back({i, dot(cross(pconst(f.D[i]), other), W)});
-      tangency.back().edge = i;
     }
   }
   std::vector<std::int64_t> tangency_triangle;
@@ -297,16 +253,19 @@ std::optional<EeeEvent> eee_event(const Scene& scene, const SceneAdjacency& adj,
   // rational sample (the status is constant there), each rational interior breakpoint decided itself.
   // Irrational breakpoints need no decision (docs/theory.md: an irrational parameter is blocked only if an
   // adjacent gap is blocked by the same occluder, so it lies in a closed invalid gap already).
-  auto invalid_pieces = [](const std::vector<Breakpoint>& b, auto&& invalid_at, std::vector<Invalid>& out) {
+  // `gap_invalid` is only called strictly inside gaps, `invalid_at` at rational breakpoints.
+  auto invalid_pieces = [](const std::vector<Breakpoint>& b, auto&& gap_invalid, auto&& invalid_at,
+                           std::vector<Invalid>& out) {
     for (std::size_t i = 0; i + 1 < b.size(); ++i) {
-      if (invalid_at(rational_strictly_between(b[i].t, b[i + 1].t)))
+      if (gap_invalid(rational_strictly_between(b[i].t, b[i + 1].t)))
         out.push_back({b[i].t, b[i + 1].t, b[i].cause, b[i + 1].cause});
       if (i + 2 < b.size() && b[i + 1].rational && invalid_at(b[i + 1].q))
         out.push_back({b[i + 1].t, b[i + 1].t, b[i + 1].cause, b[i + 1].cause});
     }
   };
   std::vector<Invalid> invalid;
-  invalid_pieces(base, [&](const Exact& t) { return !base_valid(t); }, invalid);
+  auto base_invalid = [&](const Exact& t) { return !base_valid(t); };
+  invalid_pieces(base, base_invalid, base_invalid, invalid);
 
   // The hull [vmin, vmax] of the base-valid set: occlusion matters only there.
   std::optional<std::size_t> first_valid, last_valid;
@@ -321,47 +280,122 @@ std::optional<EeeEvent> eee_event(const Scene& scene, const SceneAdjacency& adj,
   }
   if (!first_valid) return std::nullopt;
   if (stats) ++stats->tangent_triples;
-  const Breakpoint vmin = base[*first_valid], vmax = base[*last_valid];
+  Breakpoint vmin = base[*first_valid], vmax = base[*last_valid];
 
-  // ---- Occluders: closed scene triangles without E1, E2, E3 as an edge, meeting the box of the three edges
-  // (which contains every generator segment of a base-valid line).
-  Box3 box{scene.vertices[E[0]->v[0]], scene.vertices[E[0]->v[0]]};
-  for (int i = 0; i < 3; ++i)
-    for (int v : E[i]->v) {
-      const Point3& p = scene.vertices[v];
-      box.lo = {std::min(box.lo.x, p.x), std::min(box.lo.y, p.y), std::min(box.lo.z, p.z)};
-      box.hi = {std::max(box.hi.x, p.x), std::max(box.hi.y, p.y), std::max(box.hi.z, p.z)};
+  // ---- Occluders: closed scene triangles without E1, E2, E3 as an edge. For base-valid t the generator
+  // points lie on P([vmin, vmax]) and on the parts of E2, E3 that Q2, Q3 sweep for t in [vmin, vmax] (when
+  // den_k keeps its sign there s_k is monotone, so that part is [s_k(vmin), s_k(vmax)] clipped to [0, 1];
+  // else all of E_k), so every generator segment lies in the convex hull of the six points H below:
+  // candidates are the triangles meeting H's bounding box (rounded outward), minus those an exact test
+  // separates from H (by a facet plane of H, or by their own plane).
+  auto swept_part = [&](int k, Vec3<Exact>* lo, Vec3<Exact>* hi) {
+    *lo = A[k];
+    *hi = B[k];
+    const Exact d0 = f.den[k](vmin.q), d1 = f.den[k](vmax.q);
+    if (CGAL::sign(d0) == 0 || CGAL::sign(d0) != CGAL::sign(d1)) return;  // den is linear: no root inside
+    const Exact s0 = f.sn[k](vmin.q) / d0, s1 = f.sn[k](vmax.q) / d1;
+    const Exact a = std::max(Exact(0), std::min(s0, s1)), b = std::min(Exact(1), std::max(s0, s1));
+    if (a > b) return;  // cannot happen for a base-valid range; keep the whole edge
+    *lo = A[k] + a * f.D[k];
+    *hi = A[k] + b * f.D[k];
+  };
+  std::array<Vec3<Exact>, 6> H{eval(f.P, vmin.q), eval(f.P, vmax.q), A[1], B[1], A[2], B[2]};
+  swept_part(1, &H[2], &H[3]);
+  swept_part(2, &H[4], &H[5]);
+  Box3 box;
+  {
+    auto down = [](const Exact& x) { const double d = CGAL::to_interval(x).first; return std::nextafter(d, -HUGE_VAL); };
+    auto up = [](const Exact& x) { const double d = CGAL::to_interval(x).second; return std::nextafter(d, HUGE_VAL); };
+    box.lo = {down(H[0].x), down(H[0].y), down(H[0].z)};
+    box.hi = {up(H[0].x), up(H[0].y), up(H[0].z)};
+    for (const auto& p : H) {
+      box.lo = {std::min(box.lo.x, down(p.x)), std::min(box.lo.y, down(p.y)), std::min(box.lo.z, down(p.z))};
+      box.hi = {std::max(box.hi.x, up(p.x)), std::max(box.hi.y, up(p.y)), std::max(box.hi.z, up(p.z))};
     }
+  }
+  struct Facet {
+    int a, b, c;
+    Sign outside;
+  };
+  // Normal of plane(P(t), l2) (a VEE line through a point W has W in it).
+  const PVec plane_p_l2 = cross(pconst(f.D[1]), f.P - pconst(A[1]));
+  std::vector<Facet> facets;
+  // Facet planes of conv(H): planes through three non-collinear points of H with all of H on one closed side
+  // (computed only when there are many candidates: they cost ~100 exact orientation tests).
+  auto compute_facets = [&]() {
+    for (int a = 0; a < 6; ++a)
+      for (int b2 = a + 1; b2 < 6; ++b2)
+        for (int c2 = b2 + 1; c2 < 6; ++c2) {
+          if (collinear(H[a], H[b2], H[c2])) continue;
+          int pos = 0, neg = 0;
+          for (int d = 0; d < 6; ++d) {
+            const Sign sd = orient3d(H[a], H[b2], H[c2], H[d]);
+            pos += sd == Sign::Positive;
+            neg += sd == Sign::Negative;
+          }
+          if (pos > 0 && neg > 0) continue;
+          if (pos == 0 && neg == 0) continue;  // flat hull: no outside
+          facets.push_back({a, b2, c2, pos > 0 ? Sign::Negative : Sign::Positive});
+        }
+  };
+  // Large candidates first (a floating-point heuristic for the order only): every few occluders the free set
+  // is recomputed; the search stops when it is empty and later occluders only look inside its hull.
+  std::vector<std::pair<double, int>> cand;
   for (int ti : index.triangles_in_box(box)) {
     const auto& tr = scene.triangles[ti];
     if (has_edge(tr, E[0]->v) || has_edge(tr, E[1]->v) || has_edge(tr, E[2]->v)) continue;
-    if (stats) ++stats->occluder_tests;
+    const Point3 &p0 = scene.corner(tr, 0), &p1 = scene.corner(tr, 1), &p2 = scene.corner(tr, 2);
+    const Point3 cr = cross(p1 - p0, p2 - p0);
+    cand.emplace_back(-dot(cr, cr), ti);
+  }
+  std::sort(cand.begin(), cand.end());
+  if (cand.size() > 8) compute_facets();
+  int since_check = 0;
+  for (const auto& [key, ti] : cand) {
+    if (since_check >= 4) {
+      since_check = 0;
+      std::vector<EeeInterval> comps =
+          free_components(invalid, endpoint_end(0, E[0]->v[0]), endpoint_end(0, E[0]->v[1]));
+      if (comps.empty()) return std::nullopt;
+      vmin = breakpoint_at(comps.front().t0, comps.front().end0);
+      vmax = breakpoint_at(comps.back().t1, comps.back().end1);
+    }
+    const auto& tr = scene.triangles[ti];
     Occluder T{ti, tr.id, tr.v, {}};
     for (int k = 0; k < 3; ++k) T.c[k] = to_rational(scene.corner(tr, k));
     const Vec3<Exact> n = cross(T.c[1] - T.c[0], T.c[2] - T.c[0]);
     const Exact c = dot(n, T.c[0]);
-    // Quick exact rejection: T strictly on one side of plane(T) is impossible; instead reject when all
-    // six edge endpoints lie strictly on one side of T's plane (then so does every generator segment).
+    // Exact separation from H (see above): all of T strictly outside one facet plane of H, or all of H
+    // strictly on one side of T's plane.
     {
-      int s0 = 0;
-      bool separated = true;
-      for (int i = 0; i < 3 && separated; ++i)
-        for (const auto* p : {&A[i], &B[i]}) {
-          const int s = CGAL::sign(dot(n, *p) - c);
-          if (s == 0 || (s0 != 0 && s != s0)) {
+      bool separated = false;
+      for (const Facet& fc : facets) {
+        separated = true;
+        for (int k = 0; k < 3 && separated; ++k)
+          separated = orient3d(H[fc.a], H[fc.b], H[fc.c], T.c[k]) == fc.outside;
+        if (separated) break;
+      }
+      if (!separated) {
+        int s0 = 0;
+        separated = true;
+        for (const auto& p : H) {
+          const int sp = CGAL::sign(dot(n, p) - c);
+          if (sp == 0 || (s0 != 0 && sp != s0)) {
             separated = false;
             break;
           }
-          s0 = s;
+          s0 = sp;
         }
+      }
       if (separated) continue;
     }
+    if (stats) ++stats->occluder_tests;
     std::vector<Breakpoint> b;
     b.push_back(vmin);
     b.push_back(vmax);
     // VEE lines through T's vertices (for the cause; also roots of the edge polynomials below).
     for (int k = 0; k < 3; ++k) {
-      const Poly p = dot(cross(pconst(f.D[1]), f.P - pconst(A[1])), pconst(T.c[k] - A[1]));
+      const Poly p = dotc(plane_p_l2, T.c[k] - A[1]);
       for (const Root& r : real_roots(p)) {
         if (!(r.t > vmin.t && r.t < vmax.t)) continue;
         const Vec3<Exact> d = eval(f.Ld, r.q), x = T.c[k] - eval(f.P, r.q);
@@ -376,15 +410,16 @@ std::optional<EeeEvent> eee_event(const Scene& scene, const SceneAdjacency& adj,
       }
     }
     // EEEE lines meeting an edge line of T: side(L(t), edge line) = 0, a quadratic in t.
+    std::array<Poly, 3> q, h;
     for (int k = 0; k < 3; ++k) {
       const PluckerLine<Exact> el = line_through(T.c[k], T.c[(k + 1) % 3]);
-      const Poly q = dot(f.Ld, pconst(el.m)) + dot(pconst(el.d), f.Lm);
+      q[k] = dotc(f.Ld, el.m) + dotc(f.Lm, el.d);
       EeeEnd cause;
       cause.cause = EeeEnd::Cause::Occluder;
       cause.triangle = T.id;
       cause.feature.kind = OccluderFeature::Kind::Edge;
       cause.feature.ids = {T.ids[k], T.ids[(k + 1) % 3]};
-      add_roots(b, q, cause, vmin.t, vmax.t);
+      add_roots(b, q[k], cause, vmin.t, vmax.t);
     }
     // A generator point crossing T's plane (the blocked part starts/stops at the segment's end).
     {
@@ -393,7 +428,10 @@ std::optional<EeeEvent> eee_event(const Scene& scene, const SceneAdjacency& adj,
       cause.triangle = T.id;
       cause.feature.kind = OccluderFeature::Kind::Face;
       cause.feature.ids = {T.ids[0], T.ids[1], T.ids[2]};
-      for (int k = 0; k < 3; ++k) add_roots(b, f.height(k, n, c), cause, vmin.t, vmax.t);
+      for (int k = 0; k < 3; ++k) {
+        h[k] = f.height(k, n, c);
+        add_roots(b, h[k], cause, vmin.t, vmax.t);
+      }
       for (int k = 1; k <= 2; ++k) add_roots(b, f.den[k], singular_end(k), vmin.t, vmax.t);
     }
     sort_unique(b);
@@ -402,33 +440,33 @@ std::optional<EeeEvent> eee_event(const Scene& scene, const SceneAdjacency& adj,
       const RationalLine l = rational_line(f, t);
       return open_segment_meets_closed_triangle(l.pts[l.lo], l.pts[l.hi], T.c[0], T.c[1], T.c[2]);
     };
-    invalid_pieces(b, blocked, invalid);
+    // Inside a gap L(t) is not in T's plane and the status is the sign function of docs/theory.md: generator
+    // points strictly on both sides of the plane, and side signs w.r.t. T's edge lines all >= 0 or all <= 0.
+    auto blocked_in_gap = [&](const Exact& t) {
+      const int d1 = CGAL::sign(f.den[1](t)), d2 = CGAL::sign(f.den[2](t));
+      if (d1 == 0 || d2 == 0) return false;  // not inside a gap
+      const int hs[3] = {CGAL::sign(h[0](t)), CGAL::sign(h[1](t)) * d1, CGAL::sign(h[2](t)) * d2};
+      const bool above = hs[0] > 0 || hs[1] > 0 || hs[2] > 0, below = hs[0] < 0 || hs[1] < 0 || hs[2] < 0;
+      if (!above || !below) return false;
+      bool pos = false, neg = false;
+      for (int k = 0; k < 3; ++k) {
+        const int sk = CGAL::sign(q[k](t));
+        pos = pos || sk > 0;
+        neg = neg || sk < 0;
+      }
+      return !(pos && neg);
+    };
+    const std::size_t before = invalid.size();
+    invalid_pieces(b, blocked_in_gap, blocked, invalid);
+    if (invalid.size() > before) ++since_check;
   }
 
   // ---- Free components: [0, 1] minus the union of the closed invalid pieces, components of positive length.
-  std::sort(invalid.begin(), invalid.end(), [](const Invalid& x, const Invalid& y) { return x.lo < y.lo; });
   EeeEvent ev;
   for (int i = 0; i < 3; ++i) ev.edges[i] = E[i]->v;
-  RootNumber pos(0);
-  EeeEnd pos_end = endpoint_end(0, E[0]->v[0]);
-  auto emit = [&](const RootNumber& t1, const EeeEnd& end1) {
-    EeeInterval iv;
-    iv.t0 = pos;
-    iv.t1 = t1;
-    iv.end0 = pos_end;
-    iv.end1 = end1;
-    iv.sample_t = rational_strictly_between(pos, t1);
-    ev.intervals.push_back(std::move(iv));
-  };
-  for (const auto& iv : invalid) {
-    if (iv.lo > pos) emit(iv.lo, iv.lo_end);
-    if (iv.hi >= pos) {
-      pos = iv.hi;
-      pos_end = iv.hi_end;
-    }
-  }
-  if (pos < one) emit(one, endpoint_end(0, E[0]->v[1]));
+  ev.intervals = free_components(invalid, endpoint_end(0, E[0]->v[0]), endpoint_end(0, E[0]->v[1]));
   if (ev.intervals.empty()) return std::nullopt;
+  for (auto& iv : ev.intervals) iv.sample_t = rational_strictly_between(iv.t0, iv.t1);
   return ev;
 }
 

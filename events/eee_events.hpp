@@ -35,10 +35,13 @@ struct EeeEnd {
     EdgeEndpoint,  // the line passes through an endpoint of E1 (t = 0 or 1), E2 or E3 (a VEE line); `edge` =
                    // 0, 1, 2 says which generator, `vertex` = the scene vertex id
     Occluder,      // an occluder starts/stops blocking: `triangle` (stable id), `feature` (Vertex: VEE line
-                   // through that occluder vertex; Edge: EEEE line meeting that occluder edge; Face: degenerate)
+                   // through that occluder vertex, t rational; Edge: EEEE line meeting that occluder edge's
+                   // line, t in Q(sqrt D); Face: a generator point of the line lies in the occluder's plane,
+                   // i.e. the occluder touches a generator there, t rational)
     Tangency,      // the line stops being tangent at generator `edge` (0, 1, 2): it lies in the plane of
                    // `triangle` (stable id), a face incident to that edge
-    Singular,      // the transversal is parallel to E2's or E3's line there (meets it at infinity)
+    Singular,      // the transversal is parallel to E2's (edge 1) or E3's (edge 2) line there (meets it at
+                   // infinity)
   };
   Cause cause = Cause::EdgeEndpoint;
   int edge = -1;
@@ -74,6 +77,8 @@ struct EeeStats {
 // The one EEE event of the edges adj.edges[e1], adj.edges[e2], adj.edges[e3] (indices into adj.edges, any
 // order: they are sorted), or std::nullopt if it has no free interval (or the edges share a vertex, or two
 // supporting lines are coplanar). Exact. Thread-safe (no shared mutable state besides `stats` if given).
+// Throws std::out_of_range for an index outside adj.edges.
+// Sets sample_t of each interval; end_object_front/back are left at -1 (see eee_segment_ends).
 std::optional<EeeEvent> eee_event(const Scene& scene, const SceneAdjacency& adj, const OccluderIndex& index,
                                   int e1, int e2, int e3, EeeStats* stats = nullptr);
 
@@ -94,7 +99,7 @@ struct EeeLinePoints {
 EeeLinePoints eee_line_points(const Scene& scene, const EeeEvent& event, const RootNumber& t);
 
 // The exact text of a parameter: "num/den" (or an integer) when rational, else "a+b*sqrt(c)" or
-// "a-b*sqrt(c)" with a, b, c rationals written the same way (b > 0, c > 0 an integer that is not a square).
+// "a-b*sqrt(c)" with a, b, c rationals written the same way (b > 0; c > 0 is not the square of a rational).
 // docs/cli.md documents this form.
 std::string root_number_to_string(const RootNumber& x);
 
