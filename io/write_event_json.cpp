@@ -1,6 +1,5 @@
 #include "io/write_event_json.hpp"
 
-#include "events/eee_line.hpp"
 #include "io/json_number.hpp"
 
 namespace exactvis {
@@ -50,15 +49,17 @@ nlohmann::json eee_end_to_json(const Scene& scene, const EeeEvent& ev, const Roo
   if (end.triangle >= 0) j["triangle"] = end.triangle;
   if (end.cause == EeeEnd::Cause::Occluder)
     j["feature"] = {{"kind", feature_name(end.feature.kind)}, {"vertices", end.feature.ids}};
-  if (is_rational(t)) {
-    if (const auto line = eee_line_at(scene, ev.edges, t.a0()))
-      j["line"] = {{"through", {point_json(line->point), point_json(line->point + line->dir)}}};
-  } else if (const auto line = eee_line_at(scene, ev.edges, Exact(CGAL::to_double(t)))) {
-    auto approx = [](const Vec3<Exact>& p) {
-      return nlohmann::json{CGAL::to_double(p.x), CGAL::to_double(p.y), CGAL::to_double(p.z)};
-    };
-    j["line"] = {{"through_approx", {approx(line->point), approx(line->point + line->dir)}}};
-  }
+  // The end line exactly (coordinates in the field of t): its point on E1 and that point plus its direction,
+  // and its points on the other two generators' lines (null where it is parallel to that line).
+  const EeeLinePoints line = eee_line_points(scene, ev, t);
+  auto point = [](const Vec3<RootNumber>& p) {
+    return nlohmann::json{root_number_to_json(p.x), root_number_to_json(p.y), root_number_to_json(p.z)};
+  };
+  const Vec3<RootNumber> second(line.on_e1.x + line.direction.x, line.on_e1.y + line.direction.y,
+                                line.on_e1.z + line.direction.z);
+  j["line"] = {{"through", {point(line.on_e1), point(second)}},
+               {"on_generators", {point(line.on_e1), line.on_e2 ? point(*line.on_e2) : nlohmann::json(nullptr),
+                                  line.on_e3 ? point(*line.on_e3) : nlohmann::json(nullptr)}}};
   return j;
 }
 

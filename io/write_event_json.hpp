@@ -26,8 +26,9 @@ nlohmann::json root_number_to_json(const RootNumber& x);
 // Output: the array of EEE events [{"kind": "EEE", "edges": [[a, b], [c, d], [e, f]], "intervals": [[t0, t1],
 //   ...], "intervals_approx": [[..]], "ends": [[end, end], ...], "segment_ends": [{"sample_t", "front",
 //   "back"}, ...]}, ...] where each end is {"t", "t_approx", "cause", "generator", "vertex", "triangle",
-//   "feature", "line"}; "line" is {"through": [P(t), P(t) + d]} (exact) when t is rational, else
-//   {"through_approx": [...]} (doubles). t runs along the first listed edge from its first to its second vertex.
+//   "feature", "line"}; "line" is {"through": [P(t), P(t) + d], "on_generators": [P(t), Q2, Q3]} with exact
+//   coordinates (numbers, "num/den" or "a+b*sqrt(c)"; Q2/Q3 null where the line is parallel to that edge).
+//   t runs along the first listed edge from its first to its second vertex.
 nlohmann::json eee_events_to_json(const Scene& scene, const EeeResult& result);
 
 }  // namespace exactvis

@@ -119,6 +119,9 @@ TEST(EventsCli, EeeEventsJsonShape) {
         const auto& t = e["intervals"][i][k];
         EXPECT_TRUE(t.is_number() || t.is_string());
         EXPECT_TRUE(e["ends"][i][k].contains("cause"));
+        ASSERT_TRUE(e["ends"][i][k]["line"].contains("through"));
+        EXPECT_EQ(e["ends"][i][k]["line"]["through"].size(), 2u);
+        EXPECT_EQ(e["ends"][i][k]["line"]["on_generators"].size(), 3u);
       }
       EXPECT_LT(e["intervals_approx"][i][0].get<double>(), e["intervals_approx"][i][1].get<double>());
     }
