@@ -23,6 +23,7 @@ struct EventsOptions {
   bool json = false;
   std::string vtp;
   std::string kinds = "EV,EEE";
+  bool no_split = false;
   bool no_progress = false;
 };
 
@@ -52,6 +53,7 @@ int run_events(const EventsOptions& o) {
     eee_opt.light_triangles = light.triangles;
   }
   opt.progress = eee_opt.progress = !o.no_progress && isatty(STDERR_FILENO);
+  opt.split_at_end_objects = !o.no_split;
   exactvis::EvResult r;
   exactvis::EeeResult eee;
   if (want_ev) r = exactvis::enumerate_ev_events(scene, opt);
@@ -125,6 +127,9 @@ const exactvis::app::CommandRegistration registration("events", 110, [](CLI::App
       ->capture_default_str();
   sub->add_flag("--json", opts->json, "Machine-readable JSON on stdout");
   sub->add_option("--vtp", opts->vtp, "Write the event surfaces (EV wedges, EEE ruled strips) to this .vtp file");
+  sub->add_flag("--no-split", opts->no_split,
+                "Do not split EV free intervals where the end objects change (faster on large scenes; segment_ends "
+                "are then those of each interval's midpoint line only)");
   sub->add_flag("--no-progress", opts->no_progress, "No progress bar on stderr");
   return [opts]() { return run_events(*opts); };
 });

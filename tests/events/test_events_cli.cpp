@@ -65,6 +65,19 @@ TEST(EventsCli, LightRestrictedJson) {
   }
 }
 
+// --no-split: one entry per free interval (here [0, 1] for every light event), no end_object_change ends.
+TEST(EventsCli, NoSplitReportsFreeIntervalsOnce) {
+  const auto r = run("events " + scene_file().string() + " --light lamp --kinds EV --no-split --json");
+  ASSERT_EQ(r.status, 0);
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["counts"]["EV"], 64);
+  for (const auto& e : j["events"]) {
+    ASSERT_EQ(e["intervals"].size(), 1u);
+    EXPECT_EQ(e["intervals"][0][0], 0);
+    EXPECT_EQ(e["intervals"][0][1], 1);
+  }
+}
+
 TEST(EventsCli, PolygonLightAndVtp) {
   const auto vtp = std::filesystem::temp_directory_path() / "exactvis_test_events" / "surfaces.vtp";
   std::filesystem::remove(vtp);
