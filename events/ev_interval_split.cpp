@@ -96,6 +96,44 @@ std::vector<EvInterval> split_ev_interval(const Scene& scene, const SpatialIndex
     return P2{dot(r, ca), dot(r, cb)};
   };
 
+  // Interval filter (rigorous enclosures, decides nothing by rounding): the cut of T with the plane lies in
+  // the image of T under the affine map X -> (alpha, beta); where sigma = alpha + beta keeps one strict sign
+  // over T, t = beta / sigma is monotone along segments, so its range over T lies between the vertices' t.
+  // T is skipped when that range misses [t0, t1], or when 0 < sigma < 1 on all of T (inside the wedge: no
+  // end object there in a free interval, and its endpoints and crossings are not on a ray).
+  using IP = std::array<I, 3>;
+  auto iv3 = [](const Vec3<Exact>& x) {
+    IP r;
+    for (int k = 0; k < 3; ++k) {
+      const auto p = CGAL::to_interval(x[k]);
+      r[k] = I(p.first, p.second);
+    }
+    return r;
+  };
+  const IP ica = iv3(ca), icb = iv3(cb);
+  const auto it0 = CGAL::to_interval(interval.t0), it1 = CGAL::to_interval(interval.t1);
+  auto may_matter = [&](const SceneTriangle& tri) {
+    I sig[3], tt[3];
+    for (int k = 0; k < 3; ++k) {
+      const Point3& q = scene.corner(tri, k);
+      const IP r{I(q.x) - I(pv.x), I(q.y) - I(pv.y), I(q.z) - I(pv.z)};
+      const I al = r[0] * ica[0] + r[1] * ica[1] + r[2] * ica[2];
+      const I be = r[0] * icb[0] + r[1] * icb[1] + r[2] * icb[2];
+      sig[k] = al + be;
+      tt[k] = I(0);
+      if (sig[k].inf() > 0 || sig[k].sup() < 0) tt[k] = be / sig[k];
+    }
+    const bool pos = sig[0].inf() > 0 && sig[1].inf() > 0 && sig[2].inf() > 0;
+    const bool neg = sig[0].sup() < 0 && sig[1].sup() < 0 && sig[2].sup() < 0;
+    if (pos && sig[0].sup() < 1 && sig[1].sup() < 1 && sig[2].sup() < 1) return false;  // inside the wedge
+    if (pos || neg) {
+      const double lo = std::min({tt[0].inf(), tt[1].inf(), tt[2].inf()});
+      const double hi = std::max({tt[0].sup(), tt[1].sup(), tt[2].sup()});
+      if (hi < it0.first || lo > it1.second) return false;
+    }
+    return true;
+  };
+
   // Candidate triangles of both sides and their segments in the wedge plane.
   std::vector<std::int64_t> cand = spatial.triangles_in_box(swept_box(pv, pa, pb, interval.t0, interval.t1, box, true));
   for (std::int64_t ti : spatial.triangles_in_box(swept_box(pv, pa, pb, interval.t0, interval.t1, box, false)))
@@ -112,6 +150,7 @@ std::vector<EvInterval> split_ev_interval(const Scene& scene, const SpatialIndex
     std::array<int, 3> o;
     for (int k = 0; k < 3; ++k) o[k] = static_cast<int>(orient3d(pv, pa, pb, scene.corner(t, k)));
     if ((o[0] > 0 && o[1] > 0 && o[2] > 0) || (o[0] < 0 && o[1] < 0 && o[2] < 0)) continue;
+    if (!may_matter(t)) continue;
     std::array<Vec3<Exact>, 3> w;
     std::array<P2, 3> wc;
     for (int k = 0; k < 3; ++k) {
