@@ -74,18 +74,25 @@ struct Family {
   PVec P;
   Poly den[3], sn[3];  // index 1, 2 used
   PVec num[3];
-  PVec Ld, Lm;  // L(t) = line through P(t) then (num2 : den2)
+  PVec Ld, Lm;  // L(t) = line through P(t) then (num2 : den2); set by compute_line()
 
   Family(const std::array<Vec3<Exact>, 3>& a, const std::array<Vec3<Exact>, 3>& b) {
     for (int i = 0; i < 3; ++i) A[i] = a[i], B[i] = b[i], D[i] = b[i] - a[i];
     P = PVec(Poly::linear(A[0].x, D[0].x), Poly::linear(A[0].y, D[0].y), Poly::linear(A[0].z, D[0].z));
     for (int k = 1; k <= 2; ++k) {
       const int o = 3 - k;  // the other edge: Q_k = l_k meets plane(P(t), l_o)
-      const PVec n = cross(pconst(D[o]), P - pconst(A[o]));
-      den[k] = dot(n, pconst(D[k]));
-      sn[k] = -dot(n, pconst(A[k] - A[o]));
-      num[k] = den[k] * pconst(A[k]) + sn[k] * pconst(D[k]);
+      // Normal n(t) = D_o x (P(t) - A_o) = n0 + t n1 (linear; scalar arithmetic only).
+      const Vec3<Exact> n0 = cross(D[o], A[0] - A[o]), n1 = cross(D[o], D[0]);
+      const Vec3<Exact> ako = A[k] - A[o];
+      den[k] = Poly::linear(dot(n0, D[k]), dot(n1, D[k]));
+      sn[k] = Poly::linear(-dot(n0, ako), -dot(n1, ako));
+      for (int j = 0; j < 3; ++j)
+        num[k][j] = Poly::linear(den[k].c[0] * A[k][j] + sn[k].c[0] * D[k][j],
+                                 den[k].c[1] * A[k][j] + sn[k].c[1] * D[k][j]);
     }
+  }
+  // Plücker coordinates of L(t) (degree 2), needed only once the base conditions hold somewhere.
+  void compute_line() {
     Ld = num[1] - den[1] * P;
     Lm = cross(P, num[1]);
   }
@@ -187,7 +194,7 @@ std::optional<EeeEvent> eee_event(const Scene& scene, const SceneAdjacency& adj,
       if (orient3d(scene.vertices[E[i]->v[0]], scene.vertices[E[i]->v[1]], scene.vertices[E[j]->v[0]],
                    scene.vertices[E[j]->v[1]]) == Sign::Zero)
         return std::nullopt;  // coplanar supporting lines (exact filtered test on the input doubles)
-  const Family f(A, B);
+  Family f(A, B);
 
   // ---- Segment bounds and tangency: rational breakpoints, decided exactly at each and between them.
   struct TangencyPoly {
@@ -281,6 +288,7 @@ std::optional<EeeEvent> eee_event(const Scene& scene, const SceneAdjacency& adj,
   if (!first_valid) return std::nullopt;
   if (stats) ++stats->tangent_triples;
   Breakpoint vmin = base[*first_valid], vmax = base[*last_valid];
+  f.compute_line();
 
   // ---- Occluders: closed scene triangles without E1, E2, E3 as an edge. For base-valid t the generator
   // points lie on P([vmin, vmax]) and on the parts of E2, E3 that Q2, Q3 sweep for t in [vmin, vmax] (when
@@ -476,7 +484,8 @@ EeeLinePoints eee_line_points(const Scene& scene, const EeeEvent& event, const R
     A[i] = to_rational(scene.vertices[event.edges[i][0]]);
     B[i] = to_rational(scene.vertices[event.edges[i][1]]);
   }
-  const Family f(A, B);
+  Family f(A, B);
+  f.compute_line();
   auto ev = [&](const Poly& p) { return (RootNumber(p.c[2]) * t + RootNumber(p.c[1])) * t + RootNumber(p.c[0]); };
   auto evv = [&](const PVec& v) { return Vec3<RootNumber>(ev(v.x), ev(v.y), ev(v.z)); };
   EeeLinePoints out;
@@ -511,11 +520,14 @@ void eee_segment_ends(const Scene& scene, const SpatialIndex& spatial, const Box
 std::string root_number_to_string(const RootNumber& x) {
   Exact q;
   if (root_number_rational(x, &q)) return to_rational_string(q);
+  // a0 + a1 sqrt(n/d) = a0 + (a1/d) sqrt(n d): written with an integer radicand.
+  const Exact r = x.root();
+  const Exact c(r.numerator() * r.denominator());
+  const Exact b = x.a1() / Exact(r.denominator());
   std::string s = to_rational_string(x.a0());
-  const Exact b = x.a1();
   s += CGAL::sign(b) < 0 ? "-" : "+";
   s += to_rational_string(CGAL::sign(b) < 0 ? Exact(-b) : b);
-  s += "*sqrt(" + to_rational_string(x.root()) + ")";
+  s += "*sqrt(" + to_rational_string(c) + ")";
   return s;
 }
 

@@ -99,7 +99,7 @@ struct EeeLinePoints {
 EeeLinePoints eee_line_points(const Scene& scene, const EeeEvent& event, const RootNumber& t);
 
 // The exact text of a parameter: "num/den" (or an integer) when rational, else "a+b*sqrt(c)" or
-// "a-b*sqrt(c)" with a, b, c rationals written the same way (b > 0; c > 0 is not the square of a rational).
+// "a-b*sqrt(c)" with rationals a, b > 0 written the same way and an integer c > 0 that is not a square.
 // docs/cli.md documents this form.
 std::string root_number_to_string(const RootNumber& x);
 
