@@ -1,6 +1,7 @@
-// `exactvis events SCENE... [--light SPEC] [--json] [--vtp FILE]`: EV visual events with occlusion
-// (docs/cli.md "events", definitions in docs/theory.md section 6).
+// `exactvis events SCENE... [--light SPEC] [--kinds EV,EEE] [--json] [--vtp FILE]`: EV and EEE visual events
+// with occlusion (docs/cli.md "events", definitions in docs/theory.md section 6).
 #include "apps/command_registry.hpp"
+#include "events/eee_enumeration.hpp"
 #include "events/ev_events.hpp"
 #include "events/light_source.hpp"
 #include "io/load_scene.hpp"
@@ -10,6 +11,8 @@
 #include <nlohmann/json.hpp>
 
 #include <iostream>
+#include <sstream>
+#include <stdexcept>
 #include <unistd.h>
 
 namespace {
@@ -19,24 +22,56 @@ struct EventsOptions {
   std::string light;
   bool json = false;
   std::string vtp;
+  std::string kinds = "EV,EEE";
+  bool no_split = false;
   bool no_progress = false;
 };
 
+// Parses "EV", "EEE", "EV,EEE" (any order, case-sensitive); throws std::invalid_argument otherwise.
+std::pair<bool, bool> parse_kinds(const std::string& text) {
+  bool ev = false, eee = false;
+  std::stringstream ss(text);
+  std::string item;
+  while (std::getline(ss, item, ',')) {
+    if (item == "EV") ev = true;
+    else if (item == "EEE") eee = true;
+    else throw std::invalid_argument("--kinds: unknown event kind '" + item + "' (expected EV, EEE or EV,EEE)");
+  }
+  if (!ev && !eee) throw std::invalid_argument("--kinds: no event kind given (expected EV, EEE or EV,EEE)");
+  return {ev, eee};
+}
+
 int run_events(const EventsOptions& o) {
+  const auto [want_ev, want_eee] = parse_kinds(o.kinds);
   exactvis::Scene scene = exactvis::load_scenes(o.scenes);
   exactvis::EvOptions opt;
+  exactvis::EeeOptions eee_opt;
   exactvis::LightSource light;
   if (!o.light.empty()) {
     light = exactvis::select_light(scene, o.light);
     opt.light_triangles = light.triangles;
+    eee_opt.light_triangles = light.triangles;
   }
-  opt.progress = !o.no_progress && isatty(STDERR_FILENO);
-  const exactvis::EvResult r = exactvis::enumerate_ev_events(scene, opt);
-  if (!o.vtp.empty()) exactvis::write_event_surfaces_vtp(o.vtp, scene, r);
+  opt.progress = eee_opt.progress = !o.no_progress && isatty(STDERR_FILENO);
+  opt.split_at_end_objects = !o.no_split;
+  exactvis::EvResult r;
+  exactvis::EeeResult eee;
+  if (want_ev) r = exactvis::enumerate_ev_events(scene, opt);
+  if (want_eee) eee = exactvis::enumerate_eee_events(scene, eee_opt);
+  if (!o.vtp.empty()) exactvis::write_event_surfaces_vtp(o.vtp, scene, r, eee);
   if (o.json) {
     nlohmann::json j = exactvis::ev_events_to_json(scene, r);
-    j["counts"]["EEE"] = nullptr;  // not computed yet: see docs/cli.md
-    j["not_computed"] = {"EEE"};
+    j["counts"]["EV"] = want_ev ? nlohmann::json(r.events.size()) : nlohmann::json(nullptr);
+    j["counts"]["EEE"] = want_eee ? nlohmann::json(eee.events.size()) : nlohmann::json(nullptr);
+    j["kinds"] = nlohmann::json::array();
+    if (want_ev) j["kinds"].push_back("EV");
+    if (want_eee) j["kinds"].push_back("EEE");
+    for (auto& e : exactvis::eee_events_to_json(scene, eee)) j["events"].push_back(std::move(e));
+    j["stats"]["eee_outer_pairs"] = eee.stats.outer_pairs;
+    j["stats"]["eee_outer_pairs_kept"] = eee.stats.outer_pairs_kept;
+    j["stats"]["eee_candidate_triples"] = eee.stats.candidate_triples;
+    j["stats"]["eee_tangent_triples"] = eee.stats.eee.tangent_triples;
+    j["stats"]["eee_occluder_tests"] = eee.stats.eee.occluder_tests;
     if (!o.light.empty())
       j["light"] = {{"object", light.name}, {"appended", light.appended}, {"triangles", [&] {
                        std::vector<std::int64_t> ids;
@@ -46,14 +81,34 @@ int run_events(const EventsOptions& o) {
     std::cout << j.dump(2) << "\n";
     return 0;
   }
-  std::cout << "EV events: " << r.events.size() << "\n"
-            << "EEE events: not computed (see docs/cli.md)\n"
-            << "pairs examined: " << r.stats.pairs << ", tangent at the edge: " << r.stats.tangent_pairs
-            << ", exact occluder tests: " << r.stats.occluder_tests << "\n";
+  if (want_ev) {
+    std::cout << "EV events: " << r.events.size() << "\n"
+              << "  pairs examined: " << r.stats.pairs << ", tangent at the edge: " << r.stats.tangent_pairs
+              << ", exact occluder tests: " << r.stats.occluder_tests << "\n";
+  } else {
+    std::cout << "EV events: not computed (--kinds)\n";
+  }
+  if (want_eee) {
+    std::cout << "EEE events: " << eee.events.size() << "\n"
+              << "  outer pairs examined: " << eee.stats.outer_pairs << ", kept: " << eee.stats.outer_pairs_kept
+              << ", candidate triples: " << eee.stats.candidate_triples
+              << ", exact occluder tests: " << eee.stats.eee.occluder_tests << "\n";
+  } else {
+    std::cout << "EEE events: not computed (--kinds)\n";
+  }
   for (const auto& ev : r.events) {
     std::cout << "EV vertex " << ev.vertex << " edge [" << ev.edge[0] << ", " << ev.edge[1] << "]:";
     for (const auto& iv : ev.intervals)
       std::cout << " [" << exactvis::to_rational_string(iv.t0) << ", " << exactvis::to_rational_string(iv.t1) << "]";
+    std::cout << "\n";
+  }
+  for (const auto& ev : eee.events) {
+    std::cout << "EEE edges";
+    for (const auto& e : ev.edges) std::cout << " [" << e[0] << ", " << e[1] << "]";
+    std::cout << ":";
+    for (const auto& iv : ev.intervals)
+      std::cout << " [" << exactvis::root_number_to_string(iv.t0) << ", " << exactvis::root_number_to_string(iv.t1)
+                << "]";
     std::cout << "\n";
   }
   return 0;
@@ -61,13 +116,20 @@ int run_events(const EventsOptions& o) {
 
 const exactvis::app::CommandRegistration registration("events", 110, [](CLI::App& parent) {
   auto opts = std::make_shared<EventsOptions>();
-  CLI::App* sub = parent.add_subcommand("events", "EV visual events (critical line sets) with occlusion");
+  CLI::App* sub = parent.add_subcommand("events", "EV and EEE visual events (critical line sets) with occlusion");
   sub->add_option("scene", opts->scenes, "Scene files (.obj .ply .off .stl), loaded as one scene")->required();
   sub->add_option("--light", opts->light,
                   "Only events with a generator on the light: a scene object name, or a polygon "
                   "'x,y,z;x,y,z;x,y,z' appended to the scene");
+  sub->add_option("--kinds", opts->kinds,
+                  "Event kinds to compute: EV, EEE or EV,EEE (default). Full EEE enumeration is quadratic in the "
+                  "number of edges (docs/performance.md): use --kinds EV or --light on large scenes")
+      ->capture_default_str();
   sub->add_flag("--json", opts->json, "Machine-readable JSON on stdout");
-  sub->add_option("--vtp", opts->vtp, "Write the event surfaces (EV wedges) to this .vtp file");
+  sub->add_option("--vtp", opts->vtp, "Write the event surfaces (EV wedges, EEE ruled strips) to this .vtp file");
+  sub->add_flag("--no-split", opts->no_split,
+                "Do not split EV free intervals where the end objects change (faster on large scenes; segment_ends "
+                "are then those of each interval's midpoint line only)");
   sub->add_flag("--no-progress", opts->no_progress, "No progress bar on stderr");
   return [opts]() { return run_events(*opts); };
 });

@@ -1,8 +1,10 @@
-// Benchmark of EV event enumeration: time vs scene size (full enumeration and light-restricted) and vs
-// output size. Prints a table (docs/performance.md "bench_events" has the figures and the command).
+// Benchmark of EV and EEE event enumeration: time vs scene size (full enumeration and light-restricted) and vs
+// output size. Prints tables (docs/performance.md "bench_events" has the figures and the command).
 //
 // Usage: bench_events [--kinds town,forest,random,room] [--full 100,300,1000,3000] [--light 1000,10000,100000]
-//                     [--seed 1]
+//                     [--eee-full 100,300] [--eee-light 1000,10000] [--split 1|0] [--seed 1]
+// An empty list ("--full ''") skips that table. --split 0 turns off the EV end-object splitting.
+#include "events/eee_enumeration.hpp"
 #include "events/ev_events.hpp"
 #include "events/light_source.hpp"
 #include "events/scene_adjacency.hpp"
@@ -57,6 +59,39 @@ std::string light_polygon(const Scene& s) {
   return buf;
 }
 
+struct EeeRow {
+  double seconds = 0;
+  std::size_t events = 0, intervals = 0;
+  EeeEnumerationStats stats;
+};
+
+EeeRow run_eee(const Scene& scene, const EeeOptions& opt) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const EeeResult r = enumerate_eee_events(scene, opt);
+  EeeRow row;
+  row.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  row.events = r.events.size();
+  for (const auto& e : r.events) row.intervals += e.intervals.size();
+  row.stats = r.stats;
+  return row;
+}
+
+void eee_header(const char* title) {
+  std::printf("\n%s\n%-7s %8s %8s %12s %10s %10s %12s %8s %9s %9s %7s\n", title, "kind", "tris", "edges", "outer.pairs",
+              "kept", "triples", "occl.tests", "events", "intervals", "seconds", "growth");
+}
+
+void eee_print(const std::string& kind, const Scene& s, const EeeRow& r, double growth) {
+  const std::size_t edges = build_scene_adjacency(s).edges.size();
+  std::printf("%-7s %8zu %8zu %12llu %10llu %10llu %12llu %8zu %9zu %9.3f ", kind.c_str(), s.triangles.size(), edges,
+              (unsigned long long)r.stats.outer_pairs, (unsigned long long)r.stats.outer_pairs_kept,
+              (unsigned long long)r.stats.candidate_triples, (unsigned long long)r.stats.eee.occluder_tests, r.events,
+              r.intervals, r.seconds);
+  if (std::isnan(growth)) std::printf("%7s\n", "-");
+  else std::printf("%7.2f\n", growth);
+  std::fflush(stdout);
+}
+
 void header(const char* title) {
   std::printf("\n%s\n%-7s %8s %8s %8s %11s %11s %12s %8s %9s %9s %7s\n", title, "kind", "tris", "verts", "edges",
               "pairs", "tangent", "occl.tests", "events", "intervals", "seconds", "growth");
@@ -78,41 +113,76 @@ int main(int argc, char** argv) {
   std::vector<std::string> kinds{"town", "forest", "random"};
   std::vector<std::string> full{"100", "300", "1000", "3000"};
   std::vector<std::string> light{"1000", "10000", "100000"};
+  std::vector<std::string> eee_full{"100", "300"};
+  std::vector<std::string> eee_light{"1000", "10000"};
+  bool split_ev = true;
   std::uint64_t seed = 1;
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string a = argv[i], v = argv[i + 1];
     if (a == "--kinds") kinds = split(v);
     else if (a == "--full") full = split(v);
     else if (a == "--light") light = split(v);
+    else if (a == "--eee-full") eee_full = split(v);
+    else if (a == "--eee-light") eee_light = split(v);
+    else if (a == "--split") split_ev = v != "0";
     else if (a == "--seed") seed = std::stoull(v);
     else {
       std::fprintf(stderr, "bench_events: unknown option %s\n", a.c_str());
       return 1;
     }
   }
-  std::printf("EV events, both cores (oneTBB); growth = log(time ratio) / log(triangle ratio) vs previous row\n");
-  header("Full enumeration (all vertex-edge pairs)");
+  std::printf("EV and EEE events, both cores (oneTBB); growth = log(time ratio) / log(triangle ratio) vs previous "
+              "row; EV intervals %s at end-object changes\n", split_ev ? "split" : "not split");
+  EvOptions base;
+  base.split_at_end_objects = split_ev;
+  if (!full.empty()) header("EV: full enumeration (all vertex-edge pairs)");
   for (const auto& kind : kinds) {
     double prev_t = NAN, prev_n = NAN;
     for (const auto& n : full) {
       const Scene s = generate_scene(kind, std::stoll(n), seed);
-      const Row r = run(s, {});
+      const Row r = run(s, base);
       const double nn = static_cast<double>(s.triangles.size());
       print(kind, s, r, std::log(r.seconds / prev_t) / std::log(nn / prev_n));
       prev_t = r.seconds;
       prev_n = nn;
     }
   }
-  header("Light-restricted (a square light above the scene's centre, appended to the scene)");
+  if (!light.empty()) header("EV: light-restricted (a square light above the scene's centre, appended to the scene)");
   for (const auto& kind : kinds) {
     double prev_t = NAN, prev_n = NAN;
     for (const auto& n : light) {
       Scene s = generate_scene(kind, std::stoll(n), seed);
-      EvOptions opt;
+      EvOptions opt = base;
       opt.light_triangles = select_light(s, light_polygon(s)).triangles;
       const Row r = run(s, opt);
       const double nn = static_cast<double>(s.triangles.size());
       print(kind, s, r, std::log(r.seconds / prev_t) / std::log(nn / prev_n));
+      prev_t = r.seconds;
+      prev_n = nn;
+    }
+  }
+  if (!eee_full.empty()) eee_header("EEE: full enumeration (all outer edge pairs)");
+  for (const auto& kind : kinds) {
+    double prev_t = NAN, prev_n = NAN;
+    for (const auto& n : eee_full) {
+      const Scene s = generate_scene(kind, std::stoll(n), seed);
+      const EeeRow r = run_eee(s, {});
+      const double nn = static_cast<double>(s.triangles.size());
+      eee_print(kind, s, r, std::log(r.seconds / prev_t) / std::log(nn / prev_n));
+      prev_t = r.seconds;
+      prev_n = nn;
+    }
+  }
+  if (!eee_light.empty()) eee_header("EEE: light-restricted (same light)");
+  for (const auto& kind : kinds) {
+    double prev_t = NAN, prev_n = NAN;
+    for (const auto& n : eee_light) {
+      Scene s = generate_scene(kind, std::stoll(n), seed);
+      EeeOptions opt;
+      opt.light_triangles = select_light(s, light_polygon(s)).triangles;
+      const EeeRow r = run_eee(s, opt);
+      const double nn = static_cast<double>(s.triangles.size());
+      eee_print(kind, s, r, std::log(r.seconds / prev_t) / std::log(nn / prev_n));
       prev_t = r.seconds;
       prev_n = nn;
     }

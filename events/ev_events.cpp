@@ -1,5 +1,6 @@
 #include "events/ev_events.hpp"
 
+#include "events/ev_interval_split.hpp"
 #include "events/ev_parameter.hpp"
 #include "events/occluder_index.hpp"
 #include "events/progress_bar.hpp"
@@ -239,6 +240,15 @@ EvResult enumerate_ev_events(const Scene& scene, const EvOptions& options) {
     const Box3 box = bounding_box(scene);
     ProgressBar ends_bar("segment ends", result.events.size(), options.progress);
     auto ends = [&](EvEvent& ev) {
+      if (options.split_at_end_objects) {
+        std::vector<EvInterval> pieces;
+        for (const auto& iv : ev.intervals)
+          for (auto& piece : split_ev_interval(scene, spatial, box, ev.vertex, ev.edge, iv))
+            pieces.push_back(std::move(piece));
+        ev.intervals = std::move(pieces);
+        ends_bar.advance();
+        return;
+      }
       const Vec3<Exact> V = to_rational(scene.vertices[ev.vertex]);
       for (auto& iv : ev.intervals) {
         iv.sample_t = (iv.t0 + iv.t1) / 2;

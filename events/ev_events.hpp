@@ -28,6 +28,8 @@ struct EventEnd {
     Occluder,      // an occluder starts/stops blocking: `triangle` (stable id) and its `feature`
     Tangency,      // the line stops being tangent at V: `triangle` (stable id) is the fan triangle whose
                    // plane it lies in there, or -1 when the change is a winding change of V's closed fan
+    EndObjectChange,  // not an end of the valid set: a free interval is split here because an object at an
+                      // end of the maximal free segment changes (events/ev_interval_split.hpp)
   };
   Cause cause = Cause::EdgeEndpoint;
   std::int64_t triangle = -1;
@@ -39,8 +41,9 @@ struct EvInterval {
   EventEnd end0, end1;
   // Objects at both ends of the maximal free segment of the sample line L(sample_t), sample_t = (t0 + t1) / 2:
   // stable ids of the first triangles hit beyond E (from P(t) away from V) and behind V (from V away from E),
-  // -1 when the line leaves the scene. Filled by enumerate_ev_events when EvOptions::segment_ends is set.
-  // They may change inside the interval (not split there; docs/theory.md section 6).
+  // -1 when the line leaves the scene. Filled by enumerate_ev_events when EvOptions::segment_ends is set; with
+  // EvOptions::split_at_end_objects (default) free intervals are split where they change, so they are
+  // constant on the open interval (t0, t1); without it they may change inside (docs/theory.md section 6).
   Exact sample_t;
   std::int64_t beyond_edge = -1, behind_vertex = -1;
 };
@@ -64,6 +67,7 @@ struct EvOptions {
   bool progress = false;   // progress bar on stderr
   bool parallel = true;    // oneTBB over vertices
   bool segment_ends = true;  // find the objects at both ends of each interval's sample line
+  bool split_at_end_objects = true;  // with segment_ends: split free intervals where the end objects change
 };
 
 struct EvResult {

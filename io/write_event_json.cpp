@@ -10,6 +10,7 @@ const char* cause_name(EventEnd::Cause c) {
     case EventEnd::Cause::EdgeEndpoint: return "edge_endpoint";
     case EventEnd::Cause::Occluder: return "occluder";
     case EventEnd::Cause::Tangency: return "tangency";
+    case EventEnd::Cause::EndObjectChange: return "end_object_change";
   }
   return "?";
 }
@@ -24,7 +25,80 @@ const char* feature_name(OccluderFeature::Kind k) {
   return "?";
 }
 
+const char* eee_cause_name(EeeEnd::Cause c) {
+  switch (c) {
+    case EeeEnd::Cause::EdgeEndpoint: return "edge_endpoint";
+    case EeeEnd::Cause::Occluder: return "occluder";
+    case EeeEnd::Cause::Tangency: return "tangency";
+    case EeeEnd::Cause::Singular: return "singular";
+  }
+  return "?";
+}
+
+bool is_rational(const RootNumber& x) { return !x.is_extended() || CGAL::is_zero(x.a1()); }
+
+nlohmann::json point_json(const Vec3<Exact>& p) { return {exact_to_json(p.x), exact_to_json(p.y), exact_to_json(p.z)}; }
+
+nlohmann::json eee_end_to_json(const Scene& scene, const EeeEvent& ev, const RootNumber& t, const EeeEnd& end) {
+  nlohmann::json j;
+  j["t"] = root_number_to_json(t);
+  j["t_approx"] = CGAL::to_double(t);
+  j["cause"] = eee_cause_name(end.cause);
+  if (end.edge >= 0) j["generator"] = end.edge;
+  if (end.vertex >= 0) j["vertex"] = end.vertex;
+  if (end.triangle >= 0) j["triangle"] = end.triangle;
+  if (end.cause == EeeEnd::Cause::Occluder)
+    j["feature"] = {{"kind", feature_name(end.feature.kind)}, {"vertices", end.feature.ids}};
+  // The end line exactly (coordinates in the field of t): its point on E1 and that point plus its direction,
+  // and its points on the other two generators' lines (null where it is parallel to that line).
+  const EeeLinePoints line = eee_line_points(scene, ev, t);
+  auto point = [](const Vec3<RootNumber>& p) {
+    return nlohmann::json{root_number_to_json(p.x), root_number_to_json(p.y), root_number_to_json(p.z)};
+  };
+  const Vec3<RootNumber> second(line.on_e1.x + line.direction.x, line.on_e1.y + line.direction.y,
+                                line.on_e1.z + line.direction.z);
+  j["line"] = {{"through", {point(line.on_e1), point(second)}},
+               {"on_generators", {point(line.on_e1), line.on_e2 ? point(*line.on_e2) : nlohmann::json(nullptr),
+                                  line.on_e3 ? point(*line.on_e3) : nlohmann::json(nullptr)}}};
+  return j;
+}
+
 }  // namespace
+
+nlohmann::json root_number_to_json(const RootNumber& x) {
+  if (is_rational(x)) return exact_to_json(x.a0());
+  return root_number_to_string(x);
+}
+
+nlohmann::json eee_events_to_json(const Scene& scene, const EeeResult& result) {
+  nlohmann::json events = nlohmann::json::array();
+  auto object_of = [&](std::int64_t id) -> nlohmann::json {
+    if (id < 0) return nullptr;
+    const auto& t = scene.triangles[scene.index_of_id(id)];
+    return {{"triangle", id}, {"object", scene.objects[t.object].name}};
+  };
+  for (const auto& ev : result.events) {
+    nlohmann::json e;
+    e["kind"] = "EEE";
+    e["edges"] = {{ev.edges[0][0], ev.edges[0][1]}, {ev.edges[1][0], ev.edges[1][1]}, {ev.edges[2][0], ev.edges[2][1]}};
+    nlohmann::json iv = nlohmann::json::array(), approx = nlohmann::json::array(), ends = nlohmann::json::array();
+    nlohmann::json objects = nlohmann::json::array();
+    for (const auto& i : ev.intervals) {
+      iv.push_back({root_number_to_json(i.t0), root_number_to_json(i.t1)});
+      approx.push_back({CGAL::to_double(i.t0), CGAL::to_double(i.t1)});
+      ends.push_back({eee_end_to_json(scene, ev, i.t0, i.end0), eee_end_to_json(scene, ev, i.t1, i.end1)});
+      objects.push_back({{"sample_t", exact_to_json(i.sample_t)},
+                         {"front", object_of(i.end_object_front)},
+                         {"back", object_of(i.end_object_back)}});
+    }
+    e["intervals"] = iv;
+    e["intervals_approx"] = approx;
+    e["ends"] = ends;
+    e["segment_ends"] = objects;
+    events.push_back(std::move(e));
+  }
+  return events;
+}
 
 nlohmann::json event_end_to_json(const Scene& scene, const EvEvent& ev, const Exact& t, const EventEnd& end) {
   nlohmann::json j;
