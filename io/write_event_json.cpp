@@ -87,7 +87,10 @@ nlohmann::json eee_events_to_json(const Scene& scene, const EeeResult& result) {
       iv.push_back({root_number_to_json(i.t0), root_number_to_json(i.t1)});
       approx.push_back({CGAL::to_double(i.t0), CGAL::to_double(i.t1)});
       ends.push_back({eee_end_to_json(scene, ev, i.t0, i.end0), eee_end_to_json(scene, ev, i.t1, i.end1)});
-      objects.push_back({{"sample_t", exact_to_json(i.sample_t)},
+      objects.push_back({{"interval", objects.size()},
+                         {"t0", root_number_to_json(i.t0)},
+                         {"t1", root_number_to_json(i.t1)},
+                         {"sample_t", exact_to_json(i.sample_t)},
                          {"front", object_of(i.end_object_front)},
                          {"back", object_of(i.end_object_back)}});
     }
@@ -129,13 +132,25 @@ nlohmann::json ev_events_to_json(const Scene& scene, const EvResult& result) {
       const auto& t = scene.triangles[scene.index_of_id(id)];
       return {{"triangle", id}, {"object", scene.objects[t.object].name}};
     };
-    for (const auto& i : ev.intervals) {
-      objects.push_back({{"sample_t", exact_to_json(i.sample_t)},
+    // "intervals" are the free intervals proper (maximal components of the valid set): pieces split where
+    // the end objects change are re-joined here, and listed one by one in "segment_ends".
+    std::size_t first = 0;
+    for (std::size_t k = 0; k < ev.intervals.size(); ++k) {
+      const EvInterval& i = ev.intervals[k];
+      objects.push_back({{"interval", iv.size()},
+                         {"t0", exact_to_json(i.t0)},
+                         {"t1", exact_to_json(i.t1)},
+                         {"sample_t", exact_to_json(i.sample_t)},
                          {"beyond_edge", object_of(i.beyond_edge)},
                          {"behind_vertex", object_of(i.behind_vertex)}});
-      iv.push_back({exact_to_json(i.t0), exact_to_json(i.t1)});
-      approx.push_back({CGAL::to_double(i.t0), CGAL::to_double(i.t1)});
-      ends.push_back({event_end_to_json(scene, ev, i.t0, i.end0), event_end_to_json(scene, ev, i.t1, i.end1)});
+      const bool continues = k + 1 < ev.intervals.size() &&
+                             i.end1.cause == EventEnd::Cause::EndObjectChange && i.t1 == ev.intervals[k + 1].t0;
+      if (continues) continue;
+      const EvInterval& f = ev.intervals[first];
+      iv.push_back({exact_to_json(f.t0), exact_to_json(i.t1)});
+      approx.push_back({CGAL::to_double(f.t0), CGAL::to_double(i.t1)});
+      ends.push_back({event_end_to_json(scene, ev, f.t0, f.end0), event_end_to_json(scene, ev, i.t1, i.end1)});
+      first = k + 1;
     }
     e["intervals"] = iv;
     e["intervals_approx"] = approx;

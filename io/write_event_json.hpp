@@ -11,8 +11,10 @@ namespace exactvis {
 // Input: the scene the events were computed on, and the EV result.
 // Output: {"counts": {"EV": n}, "events": [{"kind": "EV", "vertex": id, "edge": [id, id],
 //   "intervals": [[t0, t1], ...], "intervals_approx": [[..]], "ends": [[end, end], ...],
-//   "segment_ends": [{"sample_t", "beyond_edge", "behind_vertex"}, ...]}, ...], "stats": {..}}
-// where each end is {"t", "cause", "triangle", "feature", "line": {"through": [V, P(t)]}} (exact points).
+//   "segment_ends": [{"interval", "t0", "t1", "sample_t", "beyond_edge", "behind_vertex"}, ...]}, ...],
+//   "stats": {..}} where each end is {"t", "cause", "triangle", "feature", "line": {"through": [V, P(t)]}}
+// (exact points). "intervals" are the free intervals proper: EvIntervals split at end-object changes are
+// re-joined, and each piece is one "segment_ends" entry naming its interval.
 nlohmann::json ev_events_to_json(const Scene& scene, const EvResult& result);
 
 // One interval end as JSON (also used by the text output).
@@ -24,8 +26,8 @@ nlohmann::json root_number_to_json(const RootNumber& x);
 
 // Input: the scene the events were computed on, and the EEE result.
 // Output: the array of EEE events [{"kind": "EEE", "edges": [[a, b], [c, d], [e, f]], "intervals": [[t0, t1],
-//   ...], "intervals_approx": [[..]], "ends": [[end, end], ...], "segment_ends": [{"sample_t", "front",
-//   "back"}, ...]}, ...] where each end is {"t", "t_approx", "cause", "generator", "vertex", "triangle",
+//   ...], "intervals_approx": [[..]], "ends": [[end, end], ...], "segment_ends": [{"interval", "t0", "t1",
+//   "sample_t", "front", "back"}, ...]}, ...] where each end is {"t", "t_approx", "cause", "generator", "vertex", "triangle",
 //   "feature", "line"}; "line" is {"through": [P(t), P(t) + d], "on_generators": [P(t), Q2, Q3]} with exact
 //   coordinates (numbers, "num/den" or "a+b*sqrt(c)"; Q2/Q3 null where the line is parallel to that edge).
 //   t runs along the first listed edge from its first to its second vertex.

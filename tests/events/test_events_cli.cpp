@@ -51,16 +51,24 @@ TEST(EventsCli, LightRestrictedJson) {
     if (e["kind"] == "EEE") continue;  // checked in EeeEventsJsonShape
     EXPECT_EQ(e["kind"], "EV");
     EXPECT_LT(e["edge"][0].get<int>(), e["edge"][1].get<int>());
-    // One free interval [0, 1], possibly split where the end objects change (the floor's two triangles).
+    // One free interval [0, 1]; its pieces (split where the end objects change: the floor's two triangles)
+    // are listed in segment_ends, contiguous, with different end objects on neighbouring pieces.
     const auto& iv = e["intervals"];
-    ASSERT_GE(iv.size(), 1u);
+    ASSERT_EQ(iv.size(), 1u);
     EXPECT_EQ(iv[0][0], 0);
-    EXPECT_EQ(iv[iv.size() - 1][1], 1);
+    EXPECT_EQ(iv[0][1], 1);
     EXPECT_EQ(e["ends"][0][0]["cause"], "edge_endpoint");
-    for (std::size_t i = 0; i + 1 < iv.size(); ++i) {
-      EXPECT_EQ(iv[i][1], iv[i + 1][0]);
-      EXPECT_EQ(e["ends"][i][1]["cause"], "end_object_change");
-      EXPECT_NE(e["segment_ends"][i], e["segment_ends"][i + 1]);
+    EXPECT_NE(e["ends"][0][1]["cause"], "end_object_change");
+    const auto& pieces = e["segment_ends"];
+    ASSERT_GE(pieces.size(), 1u);
+    EXPECT_EQ(pieces[0]["t0"], 0);
+    EXPECT_EQ(pieces[pieces.size() - 1]["t1"], 1);
+    for (std::size_t i = 0; i < pieces.size(); ++i) {
+      EXPECT_EQ(pieces[i]["interval"], 0);
+      if (i + 1 == pieces.size()) continue;
+      EXPECT_EQ(pieces[i]["t1"], pieces[i + 1]["t0"]);
+      EXPECT_TRUE(pieces[i]["beyond_edge"] != pieces[i + 1]["beyond_edge"] ||
+                  pieces[i]["behind_vertex"] != pieces[i + 1]["behind_vertex"]);
     }
   }
 }
