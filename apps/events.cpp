@@ -98,8 +98,22 @@ int run_events(const EventsOptions& o) {
   }
   for (const auto& ev : r.events) {
     std::cout << "EV vertex " << ev.vertex << " edge [" << ev.edge[0] << ", " << ev.edge[1] << "]:";
-    for (const auto& iv : ev.intervals)
-      std::cout << " [" << exactvis::to_rational_string(iv.t0) << ", " << exactvis::to_rational_string(iv.t1) << "]";
+    // Free intervals proper: pieces cut where the end objects change are printed joined, with the cuts.
+    for (std::size_t k = 0; k < ev.intervals.size();) {
+      std::size_t last = k;
+      while (last + 1 < ev.intervals.size() &&
+             ev.intervals[last].end1.cause == exactvis::EventEnd::Cause::EndObjectChange &&
+             ev.intervals[last].t1 == ev.intervals[last + 1].t0)
+        ++last;
+      std::cout << " [" << exactvis::to_rational_string(ev.intervals[k].t0) << ", "
+                << exactvis::to_rational_string(ev.intervals[last].t1) << "]";
+      if (last > k) {
+        std::cout << " (end objects change at";
+        for (std::size_t c = k; c < last; ++c) std::cout << " " << exactvis::to_rational_string(ev.intervals[c].t1);
+        std::cout << ")";
+      }
+      k = last + 1;
+    }
     std::cout << "\n";
   }
   for (const auto& ev : eee.events) {
