@@ -6,6 +6,7 @@
 #include "events/occluder_index.hpp"
 #include "kernel/predicates.hpp"
 #include "kernel/scene_generators.hpp"
+#include "tests/events/event_test_scenes.hpp"
 
 #include <gmpxx.h>
 #include <gtest/gtest.h>
@@ -17,30 +18,7 @@
 namespace exactvis {
 namespace {
 
-Scene make_scene(const std::vector<Point3>& v, const std::vector<std::array<int, 3>>& t) {
-  Scene s;
-  s.vertices = v;
-  for (std::size_t i = 0; i < t.size(); ++i) s.triangles.push_back({static_cast<std::int64_t>(i), t[i], 0});
-  s.objects.push_back({"test"});
-  s.faces_read = static_cast<std::int64_t>(t.size());
-  return s;
-}
-
-Scene random_soup(unsigned seed, int triangles, int range) {
-  std::mt19937 rng(seed);
-  std::uniform_int_distribution<int> coord(0, range);
-  std::vector<Point3> v;
-  std::vector<std::array<int, 3>> t;
-  while (static_cast<int>(t.size()) < triangles) {
-    Point3 p[3];
-    for (auto& q : p) q = {double(coord(rng)), double(coord(rng)), double(coord(rng))};
-    if (collinear(p[0], p[1], p[2])) continue;
-    const int b = static_cast<int>(v.size());
-    v.insert(v.end(), {p[0], p[1], p[2]});
-    t.push_back({b, b + 1, b + 2});
-  }
-  return make_scene(v, t);
-}
+using namespace event_test;
 
 // Triangles over a small vertex pool: shared edges, open and non-manifold fans.
 Scene shared_vertex_scene(unsigned seed) {

@@ -6,6 +6,7 @@
 #include "kernel/rational_between.hpp"
 #include "kernel/spatial_index.hpp"
 #include "tests/events/eee_oracle.hpp"
+#include "tests/events/event_test_scenes.hpp"
 
 #include <gtest/gtest.h>
 #include <tbb/parallel_for.h>
@@ -20,21 +21,7 @@
 namespace exactvis {
 namespace {
 
-Scene make_scene(const std::vector<Point3>& v, const std::vector<std::array<int, 3>>& t) {
-  Scene s;
-  s.vertices = v;
-  for (std::size_t i = 0; i < t.size(); ++i) s.triangles.push_back({static_cast<std::int64_t>(i), t[i], 0});
-  s.objects.push_back({"test"});
-  s.faces_read = static_cast<std::int64_t>(t.size());
-  return s;
-}
-
-ev_oracle::Mesh to_oracle(const Scene& s) {
-  ev_oracle::Mesh m;
-  for (const auto& p : s.vertices) m.v.push_back({p.x, p.y, p.z});
-  for (const auto& t : s.triangles) m.t.push_back(t.v);
-  return m;
-}
+using namespace event_test;
 
 mpq_class to_mpq(const Exact& q) {
   mpq_class r;

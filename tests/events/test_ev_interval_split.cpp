@@ -5,6 +5,7 @@
 #include "events/ev_events.hpp"
 #include "kernel/predicates.hpp"
 #include "tests/events/ev_oracle.hpp"
+#include "tests/events/event_test_scenes.hpp"
 
 #include <gtest/gtest.h>
 
@@ -13,37 +14,7 @@
 namespace exactvis {
 namespace {
 
-Scene make_scene(const std::vector<Point3>& v, const std::vector<std::array<int, 3>>& t) {
-  Scene s;
-  s.vertices = v;
-  for (std::size_t i = 0; i < t.size(); ++i) s.triangles.push_back({static_cast<std::int64_t>(i), t[i], 0});
-  s.objects.push_back({"test"});
-  s.faces_read = static_cast<std::int64_t>(t.size());
-  return s;
-}
-
-Scene random_soup(unsigned seed, int triangles, int range) {
-  std::mt19937 rng(seed);
-  std::uniform_int_distribution<int> coord(0, range);
-  std::vector<Point3> v;
-  std::vector<std::array<int, 3>> t;
-  while (static_cast<int>(t.size()) < triangles) {
-    Point3 p[3];
-    for (auto& q : p) q = {double(coord(rng)), double(coord(rng)), double(coord(rng))};
-    if (collinear(p[0], p[1], p[2])) continue;
-    const int b = static_cast<int>(v.size());
-    v.insert(v.end(), {p[0], p[1], p[2]});
-    t.push_back({b, b + 1, b + 2});
-  }
-  return make_scene(v, t);
-}
-
-ev_oracle::Mesh to_oracle(const Scene& s) {
-  ev_oracle::Mesh m;
-  for (const auto& p : s.vertices) m.v.push_back({p.x, p.y, p.z});
-  for (const auto& t : s.triangles) m.t.push_back(t.v);
-  return m;
-}
+using namespace event_test;
 
 // The reported object is a first hit of the ray (or none when the oracle finds none).
 void expect_first_hit(const Scene& s, const ev_oracle::Mesh& m, const ev_oracle::P3& origin, const ev_oracle::P3& dir,

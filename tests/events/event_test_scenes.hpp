@@ -1,0 +1,49 @@
+#pragma once
+// Small scenes shared by the events test suites: a scene from vertex/triangle lists, a random integer
+// triangle soup, and the conversion to the independent oracle's mesh (tests/events/ev_oracle.hpp).
+#include "kernel/predicates.hpp"
+#include "kernel/scene.hpp"
+#include "tests/events/ev_oracle.hpp"
+
+#include <array>
+#include <cstdint>
+#include <random>
+#include <vector>
+
+namespace exactvis::event_test {
+
+// One object "test"; triangle ids = list order.
+inline Scene make_scene(const std::vector<Point3>& v, const std::vector<std::array<int, 3>>& t) {
+  Scene s;
+  s.vertices = v;
+  for (std::size_t i = 0; i < t.size(); ++i) s.triangles.push_back({static_cast<std::int64_t>(i), t[i], 0});
+  s.objects.push_back({"test"});
+  s.faces_read = static_cast<std::int64_t>(t.size());
+  return s;
+}
+
+// `triangles` non-degenerate triangles with integer corners in [0, range]^3 (no shared vertex ids).
+inline Scene random_soup(unsigned seed, int triangles, int range) {
+  std::mt19937 rng(seed);
+  std::uniform_int_distribution<int> coord(0, range);
+  std::vector<Point3> v;
+  std::vector<std::array<int, 3>> t;
+  while (static_cast<int>(t.size()) < triangles) {
+    Point3 p[3];
+    for (auto& q : p) q = {double(coord(rng)), double(coord(rng)), double(coord(rng))};
+    if (collinear(p[0], p[1], p[2])) continue;
+    const int b = static_cast<int>(v.size());
+    v.insert(v.end(), {p[0], p[1], p[2]});
+    t.push_back({b, b + 1, b + 2});
+  }
+  return make_scene(v, t);
+}
+
+inline ev_oracle::Mesh to_oracle(const Scene& s) {
+  ev_oracle::Mesh m;
+  for (const auto& p : s.vertices) m.v.push_back({p.x, p.y, p.z});
+  for (const auto& t : s.triangles) m.t.push_back(t.v);
+  return m;
+}
+
+}  // namespace exactvis::event_test
