@@ -1,13 +1,13 @@
 #include "events/eee_enumeration.hpp"
 
 #include "events/eee_prefilter.hpp"
+#include "events/for_each_index.hpp"
 #include "events/occluder_index.hpp"
 #include "events/progress_bar.hpp"
 #include "kernel/spatial_index.hpp"
 
 #include <CGAL/Interval_nt.h>
 #include <tbb/enumerable_thread_specific.h>
-#include <tbb/parallel_for.h>
 #include <tbb/parallel_sort.h>
 
 #include <algorithm>
@@ -19,10 +19,6 @@ namespace {
 
 using Triple = std::array<int, 3>;
 using I = CGAL::Interval_nt<>;
-
-bool share_vertex(const SceneEdge& a, const SceneEdge& b) {
-  return a.v[0] == b.v[0] || a.v[0] == b.v[1] || a.v[1] == b.v[0] || a.v[1] == b.v[1];
-}
 
 Triple sorted(int a, int b, int c) {
   Triple t{a, b, c};
@@ -137,13 +133,7 @@ std::vector<Triple> eee_candidate_triples(const Scene& scene, const SceneAdjacen
     }
     bar.advance();
   };
-  if (options.parallel) {
-    tbb::parallel_for(tbb::blocked_range<int>(0, rows, 1), [&](const tbb::blocked_range<int>& rg) {
-      for (int r = rg.begin(); r != rg.end(); ++r) row(r);
-    });
-  } else {
-    for (int r = 0; r < rows; ++r) row(r);
-  }
+  for_each_index(static_cast<std::size_t>(rows), options.parallel, 1, [&](std::size_t r) { row(static_cast<int>(r)); });
   std::vector<Triple> out;
   std::uint64_t pairs = 0, kept = 0;
   for (auto& loc : locals) {
@@ -179,14 +169,7 @@ EeeResult enumerate_eee_events(const Scene& scene, const EeeOptions& options) {
     if (auto ev = eee_event(scene, adj, occluders, t[0], t[1], t[2], &loc.stats)) loc.events.push_back(std::move(*ev));
     bar.advance();
   };
-  if (options.parallel) {
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, triples.size(), 64),
-                      [&](const tbb::blocked_range<std::size_t>& r) {
-                        for (std::size_t i = r.begin(); i != r.end(); ++i) one(triples[i]);
-                      });
-  } else {
-    for (const auto& t : triples) one(t);
-  }
+  for_each_index(triples.size(), options.parallel, 64, [&](std::size_t i) { one(triples[i]); });
   for (auto& loc : locals) {
     for (auto& ev : loc.events) result.events.push_back(std::move(ev));
     result.stats.eee.triples += loc.stats.triples;
@@ -203,14 +186,7 @@ EeeResult enumerate_eee_events(const Scene& scene, const EeeOptions& options) {
       eee_segment_ends(scene, spatial, box, ev);
       ends_bar.advance();
     };
-    if (options.parallel) {
-      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, result.events.size(), 16),
-                        [&](const tbb::blocked_range<std::size_t>& r) {
-                          for (std::size_t i = r.begin(); i != r.end(); ++i) ends(result.events[i]);
-                        });
-    } else {
-      for (auto& ev : result.events) ends(ev);
-    }
+    for_each_index(result.events.size(), options.parallel, 16, [&](std::size_t i) { ends(result.events[i]); });
   }
   return result;
 }

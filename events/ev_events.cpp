@@ -2,6 +2,7 @@
 
 #include "events/ev_interval_split.hpp"
 #include "events/ev_parameter.hpp"
+#include "events/for_each_index.hpp"
 #include "events/occluder_index.hpp"
 #include "events/progress_bar.hpp"
 #include "events/ray_first_hit.hpp"
@@ -9,7 +10,6 @@
 #include "kernel/predicates.hpp"
 #include "kernel/spatial_index.hpp"
 
-#include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <map>
@@ -221,13 +221,7 @@ EvResult enumerate_ev_events(const Scene& scene, const EvOptions& options) {
     }
     bar.advance();
   };
-  if (options.parallel) {
-    tbb::parallel_for(tbb::blocked_range<int>(0, nv, 1), [&](const tbb::blocked_range<int>& r) {
-      for (int v = r.begin(); v != r.end(); ++v) work(v);
-    });
-  } else {
-    for (int v = 0; v < nv; ++v) work(v);
-  }
+  for_each_index(static_cast<std::size_t>(nv), options.parallel, 1, [&](std::size_t v) { work(static_cast<int>(v)); });
   EvResult result;
   for (int v = 0; v < nv; ++v) {
     for (auto& ev : per_vertex[v]) result.events.push_back(std::move(ev));
@@ -261,14 +255,7 @@ EvResult enumerate_ev_events(const Scene& scene, const EvOptions& options) {
       }
       ends_bar.advance();
     };
-    if (options.parallel) {
-      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, result.events.size(), 16),
-                        [&](const tbb::blocked_range<std::size_t>& r) {
-                          for (std::size_t i = r.begin(); i != r.end(); ++i) ends(result.events[i]);
-                        });
-    } else {
-      for (auto& ev : result.events) ends(ev);
-    }
+    for_each_index(result.events.size(), options.parallel, 16, [&](std::size_t i) { ends(result.events[i]); });
   }
   return result;
 }
