@@ -20,26 +20,6 @@ namespace {
 
 using namespace event_test;
 
-// Triangles over a small vertex pool: shared edges, open and non-manifold fans.
-Scene shared_vertex_scene(unsigned seed) {
-  std::mt19937 rng(seed);
-  std::uniform_int_distribution<int> coord(0, 6);
-  std::vector<Point3> v(9);
-  for (auto& p : v) p = {double(coord(rng)), double(coord(rng)), double(coord(rng))};
-  std::uniform_int_distribution<int> pick(0, 8);
-  std::set<std::array<int, 3>> seen;
-  std::vector<std::array<int, 3>> t;
-  for (int tries = 0; tries < 300 && t.size() < 8; ++tries) {
-    std::array<int, 3> c{pick(rng), pick(rng), pick(rng)};
-    if (c[0] == c[1] || c[1] == c[2] || c[0] == c[2]) continue;
-    if (collinear(v[c[0]], v[c[1]], v[c[2]])) continue;
-    auto key = c;
-    std::sort(key.begin(), key.end());
-    if (!seen.insert(key).second) continue;
-    t.push_back(c);
-  }
-  return make_scene(v, t);
-}
 
 std::string describe(const EeeEvent& ev) {
   std::string s;
@@ -93,7 +73,7 @@ TEST(EeeEnumeration, SameEventsAsAllTriplesOnRandomSoups) {
 TEST(EeeEnumeration, SameEventsAsAllTriplesWithSharedVertices) {
   std::size_t total = 0;
   for (unsigned seed = 1; seed <= 25; ++seed) {
-    const Scene s = shared_vertex_scene(300 + seed);
+    const Scene s = shared_vertex_scene(300 + seed, 9, 6, 8, 300);
     const auto want = all_triples(s, {});
     EXPECT_EQ(enumerated(s, {}, seed % 2 == 0), want) << "seed " << seed;
     total += want.size();
@@ -131,7 +111,7 @@ TEST(EeeEnumeration, SameEventsAsAllTriplesOnGeneratedScenes) {
 TEST(EeePrefilter, EdgeRulePossibleNeverRejectsASampledTangentPoint) {
   int positives = 0, checked = 0;
   for (unsigned seed = 1; seed <= 60; ++seed) {
-    const Scene s = shared_vertex_scene(900 + seed);
+    const Scene s = shared_vertex_scene(900 + seed, 9, 6, 8, 300);
     const SceneAdjacency adj = build_scene_adjacency(s);
     auto q = [&](int v) {
       const auto& p = s.vertices[v];

@@ -16,6 +16,7 @@
 #include <cmath>
 #include <functional>
 #include <map>
+#include <optional>
 #include <random>
 
 namespace exactvis {
@@ -274,8 +275,9 @@ void check_triple(const Scene& s, const SceneAdjacency& adj, const OccluderIndex
         ASSERT_TRUE(ev->intervals[n - 1].t1 <= iv.t0) << tag << ": intervals not sorted/disjoint";
         if (ev->intervals[n - 1].t1 == iv.t0) {
           Exact q;
-          if (root_number_rational(iv.t0, &q))
+          if (root_number_rational(iv.t0, &q)) {
             EXPECT_FALSE(eee_oracle::valid(m, e, to_mpq(q))) << tag << ": shared end is a valid line";
+          }
         }
       }
       EXPECT_TRUE(iv.t0 < RootNumber(iv.sample_t) && RootNumber(iv.sample_t) < iv.t1) << tag;
@@ -367,6 +369,19 @@ struct Paraboloid {
       t.push_back({base, base + 1, base + 2});
     }
   }
+  // Appends the occluder triangle (a, b, c); returns the vertex id of a (b, c follow).
+  int add_occluder(const Point3& a, const Point3& b, const Point3& c) {
+    const int base = static_cast<int>(v.size());
+    v.insert(v.end(), {a, b, c});
+    t.push_back({base, base + 1, base + 2});
+    return base;
+  }
+  // The EEE event of the three paraboloid edges (0, 1), (3, 4), (6, 7) in scene s (built from this).
+  static std::optional<EeeEvent> event(const Scene& s) {
+    const SceneAdjacency adj = build_scene_adjacency(s);
+    const OccluderIndex index(s);
+    return eee_event(s, adj, index, adj.edge_index(0, 1), adj.edge_index(3, 4), adj.edge_index(6, 7));
+  }
 };
 
 TEST(EeeEvents, ParaboloidFreeEverywhere) {
@@ -394,15 +409,9 @@ TEST(EeeEvents, ParaboloidWithOccluder) {
   Paraboloid p;
   // In the plane y = 1.5 the lines cross at (a, 1.5, 1.5 a); this triangle contains those with a in [0, 1/2]
   // (its left edge x = 0 and its right vertex (1/2, 1.5, 3/4)): blocked t = (a + 1) / 2 in [1/2, 3/4].
-  const int b = static_cast<int>(p.v.size());
-  p.v.push_back({0, 1.5, -10});
-  p.v.push_back({0, 1.5, 10});
-  p.v.push_back({0.5, 1.5, 0.75});
-  p.t.push_back({b, b + 1, b + 2});
+  const int b = p.add_occluder({0, 1.5, -10}, {0, 1.5, 10}, {0.5, 1.5, 0.75});
   const Scene s = make_scene(p.v, p.t);
-  const SceneAdjacency adj = build_scene_adjacency(s);
-  const OccluderIndex index(s);
-  const auto ev = eee_event(s, adj, index, adj.edge_index(0, 1), adj.edge_index(3, 4), adj.edge_index(6, 7));
+  const auto ev = Paraboloid::event(s);
   ASSERT_TRUE(ev.has_value());
   ASSERT_EQ(ev->intervals.size(), 2u);
   EXPECT_TRUE(ev->intervals[0].t0 == RootNumber(0));
@@ -422,15 +431,9 @@ TEST(EeeEvents, OccluderEdgeOnTheRegulus) {
   // line (the four lines lie on one regulus, the EEEE equation vanishes identically). L(t) meets the edge
   // itself for a in [-1/2, 1/2], t in [1/4, 3/4]; the ends are VEE lines through the edge's vertices.
   Paraboloid p;
-  const int b = static_cast<int>(p.v.size());
-  p.v.push_back({-0.5, 1.5, -0.75});
-  p.v.push_back({0.5, 1.5, 0.75});
-  p.v.push_back({0, -5, 0});
-  p.t.push_back({b, b + 1, b + 2});
+  p.add_occluder({-0.5, 1.5, -0.75}, {0.5, 1.5, 0.75}, {0, -5, 0});
   const Scene s = make_scene(p.v, p.t);
-  const SceneAdjacency adj = build_scene_adjacency(s);
-  const OccluderIndex index(s);
-  const auto ev = eee_event(s, adj, index, adj.edge_index(0, 1), adj.edge_index(3, 4), adj.edge_index(6, 7));
+  const auto ev = Paraboloid::event(s);
   ASSERT_TRUE(ev.has_value());
   ASSERT_EQ(ev->intervals.size(), 2u);
   EXPECT_TRUE(ev->intervals[0].t1 == RootNumber(Exact(1, 4)));
@@ -446,15 +449,9 @@ TEST(EeeEvents, OccluderInTheFamilysPlaneBlocksOneLine) {
   // sharing the end 5/8 (reported with one of the coinciding causes: the line passes through the occluder's
   // vertex (1/4, 2.5, 5/8), meets its edge line x = 1/4, y = 1.5, and P(5/8) lies in its plane).
   Paraboloid p;
-  const int b = static_cast<int>(p.v.size());
-  p.v.push_back({0.25, 1.5, -5});
-  p.v.push_back({0.25, 1.5, 5});
-  p.v.push_back({0.25, 2.5, 0.625});
-  p.t.push_back({b, b + 1, b + 2});
+  p.add_occluder({0.25, 1.5, -5}, {0.25, 1.5, 5}, {0.25, 2.5, 0.625});
   const Scene s = make_scene(p.v, p.t);
-  const SceneAdjacency adj = build_scene_adjacency(s);
-  const OccluderIndex index(s);
-  const auto ev = eee_event(s, adj, index, adj.edge_index(0, 1), adj.edge_index(3, 4), adj.edge_index(6, 7));
+  const auto ev = Paraboloid::event(s);
   ASSERT_TRUE(ev.has_value());
   ASSERT_EQ(ev->intervals.size(), 2u);
   EXPECT_TRUE(ev->intervals[0].t0 == RootNumber(0));
@@ -470,11 +467,7 @@ TEST(EeeEvents, OccluderInTheFamilysPlaneBlocksOneLine) {
 TEST(EeeEvents, IrrationalEndsFromATiltedOccluder) {
   // An occluder crossing the family's lines obliquely: its edges give EEEE ends in Q(sqrt D).
   Paraboloid p;
-  const int b = static_cast<int>(p.v.size());
-  p.v.push_back({-0.3, 1.2, -3});
-  p.v.push_back({0.4, 1.9, 3});
-  p.v.push_back({0.9, 1.4, 0.2});
-  p.t.push_back({b, b + 1, b + 2});
+  p.add_occluder({-0.3, 1.2, -3}, {0.4, 1.9, 3}, {0.9, 1.4, 0.2});
   const Scene s = make_scene(p.v, p.t);
   const CheckCounts c = check_scene(s, "tilted occluder", 0, 256, 4);
   EXPECT_GT(c.irrational_ends, 0);

@@ -67,19 +67,7 @@ int compare_with_oracle(const Scene& s, const std::string& what) {
 TEST(EvEvents, AgreesWithBruteForceOnRandomSoups) {
   int total = 0;
   for (unsigned seed = 1; seed <= 40; ++seed) {
-    std::mt19937 rng(seed);
-    std::uniform_int_distribution<int> coord(0, 5);
-    std::vector<Point3> v;
-    std::vector<std::array<int, 3>> t;
-    while (t.size() < 6) {
-      Point3 p[3];
-      for (auto& q : p) q = {double(coord(rng)), double(coord(rng)), double(coord(rng))};
-      if (collinear(p[0], p[1], p[2])) continue;
-      const int b = static_cast<int>(v.size());
-      v.insert(v.end(), {p[0], p[1], p[2]});
-      t.push_back({b, b + 1, b + 2});
-    }
-    total += compare_with_oracle(make_scene(v, t), "soup seed " + std::to_string(seed));
+    total += compare_with_oracle(random_soup(seed, 6, 5), "soup seed " + std::to_string(seed));
   }
   EXPECT_GT(total, 100);  // the comparison saw real events, not only empty ones
 }
@@ -88,23 +76,7 @@ TEST(EvEvents, AgreesWithBruteForceOnRandomSoups) {
 TEST(EvEvents, AgreesWithBruteForceWithSharedVertices) {
   int total = 0;
   for (unsigned seed = 1; seed <= 40; ++seed) {
-    std::mt19937 rng(1000 + seed);
-    std::uniform_int_distribution<int> coord(0, 4);
-    std::vector<Point3> v(8);
-    for (auto& p : v) p = {double(coord(rng)), double(coord(rng)), double(coord(rng))};
-    std::uniform_int_distribution<int> pick(0, 7);
-    std::set<std::array<int, 3>> seen;
-    std::vector<std::array<int, 3>> t;
-    for (int tries = 0; tries < 200 && t.size() < 7; ++tries) {
-      std::array<int, 3> c{pick(rng), pick(rng), pick(rng)};
-      if (c[0] == c[1] || c[1] == c[2] || c[0] == c[2]) continue;
-      if (collinear(v[c[0]], v[c[1]], v[c[2]])) continue;
-      auto key = c;
-      std::sort(key.begin(), key.end());
-      if (!seen.insert(key).second) continue;
-      t.push_back(c);
-    }
-    total += compare_with_oracle(make_scene(v, t), "shared seed " + std::to_string(seed));
+    total += compare_with_oracle(shared_vertex_scene(1000 + seed, 8, 4, 7, 200), "shared seed " + std::to_string(seed));
   }
   EXPECT_GT(total, 50);
 }
