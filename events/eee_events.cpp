@@ -500,13 +500,26 @@ EeeLinePoints eee_line_points(const Scene& scene, const EeeEvent& event, const R
   return out;
 }
 
-void eee_segment_ends(const Scene& scene, const SpatialIndex& spatial, const Box3& box, EeeEvent& event) {
+namespace {
+Family event_family(const Scene& scene, const EeeEvent& event) {
   std::array<Vec3<Exact>, 3> A, B;
   for (int i = 0; i < 3; ++i) {
     A[i] = to_rational(scene.vertices[event.edges[i][0]]);
     B[i] = to_rational(scene.vertices[event.edges[i][1]]);
   }
-  const Family f(A, B);
+  return Family(A, B);
+}
+}  // namespace
+
+std::optional<EeeGeneratorSegment> eee_generator_segment(const Scene& scene, const EeeEvent& event, const Exact& t) {
+  const Family f = event_family(scene, event);
+  if (CGAL::is_zero(f.den[1](t)) || CGAL::is_zero(f.den[2](t))) return std::nullopt;
+  const RationalLine l = rational_line(f, t);
+  return EeeGeneratorSegment{l.pts[l.lo], l.pts[l.hi], l.pts[1] - l.pts[0]};
+}
+
+void eee_segment_ends(const Scene& scene, const SpatialIndex& spatial, const Box3& box, EeeEvent& event) {
+  const Family f = event_family(scene, event);
   for (auto& iv : event.intervals) {
     const RationalLine l = rational_line(f, iv.sample_t);
     const Vec3<Exact> d = l.pts[1] - l.pts[0];

@@ -86,6 +86,14 @@ std::optional<EeeEvent> eee_event(const Scene& scene, const SceneAdjacency& adj,
 // EeeInterval), exactly, with events/ray_first_hit.hpp. `box` = bounding_box(scene).
 void eee_segment_ends(const Scene& scene, const SpatialIndex& spatial, const Box3& box, EeeEvent& event);
 
+// The generator segment of L(t) at a rational t (for output): its outermost generator points `back` and
+// `front` and the direction d = Q2 - P(t), front - back a positive multiple of d; std::nullopt where L(t)
+// meets E2's or E3's line at infinity (a Singular parameter, never inside a free interval). Exact.
+struct EeeGeneratorSegment {
+  Vec3<Exact> back, front, direction;
+};
+std::optional<EeeGeneratorSegment> eee_generator_segment(const Scene& scene, const EeeEvent& event, const Exact& t);
+
 // The exact points of the line L(t) of an EEE event (for output and re-checking): its point on E1, and its
 // points on the supporting lines of E2 and E3 (std::nullopt when the line is parallel to that edge's line,
 // t a Singular end). `direction` is Q2 - P scaled by a nonzero factor (always defined). Coordinates in the

@@ -1,6 +1,6 @@
 #include "io/write_event_surfaces.hpp"
 
-#include "events/eee_line.hpp"
+#include "events/eee_events.hpp"
 #include "events/ray_first_hit.hpp"
 #include "io/atomic_file.hpp"
 #include "kernel/predicates.hpp"
@@ -137,11 +137,9 @@ void write_event_surfaces_vtp(const std::string& path, const Scene& scene, const
       const auto& iv = e.intervals[ii];
       std::vector<std::pair<D3, D3>> segs;
       for (const Exact& t : samples(iv.t0, iv.t1, n)) {
-        const auto line = eee_line_at(scene, e.edges, t);
-        if (!line) continue;  // singular parameter (not inside a free interval; defensive)
-        const auto [lo, hi] = std::minmax_element(line->s.begin(), line->s.end());
-        const Vec3<Exact> back = line->point + *lo * line->dir, front = line->point + *hi * line->dir;
-        segs.emplace_back(free_end(c, back, -line->dir), free_end(c, front, line->dir));
+        const auto g = eee_generator_segment(scene, e, t);
+        if (!g) continue;  // singular parameter (not inside a free interval; defensive)
+        segs.emplace_back(free_end(c, g->back, -g->direction), free_end(c, g->front, g->direction));
       }
       strip(segs,
             {1, vtkIdType(ei), -1, e.edges[0][0], e.edges[0][1], e.edges[1][0], e.edges[1][1], e.edges[2][0],
