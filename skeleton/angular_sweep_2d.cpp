@@ -37,6 +37,15 @@ struct CloserEdge {
 
 }  // namespace
 
+bool edge_closer(const Scene2D& scene, const Point2& center, int e1, int e2) {
+  auto oriented = [&](int e) {
+    int a = e, b = scene.next[e];
+    if (orientation2(center, scene.points[a], scene.points[b]) == Sign::Negative) std::swap(a, b);
+    return SweepEdge{e, a, b};
+  };
+  return CloserEdge{&scene, &center}(oriented(e1), oriented(e2));
+}
+
 bool vertex_before_crossing(const Scene2D& scene, const Point2& center, int w, int crossing) {
   if (crossing < 0) return true;
   const Point2& a = scene.points[crossing];

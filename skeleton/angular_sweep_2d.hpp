@@ -25,6 +25,10 @@ struct SweepEvent2D {
 // first vertex (edge e goes from e to scene.next[e]).
 std::vector<SweepEvent2D> angular_sweep(const Scene2D& scene, const Point2& center, int center_vertex = -1);
 
+// For two distinct edges e1, e2 (not collinear with `center`) that both cross some open sector of rays from
+// `center`: true iff e1 is met first along every ray of that sector. Exact.
+bool edge_closer(const Scene2D& scene, const Point2& center, int e1, int e2);
+
 // True iff the nearest vertex w of an event is met before the edge `crossing` (or there is none), i.e.
 // the open segment center-w meets no edge interior.
 bool vertex_before_crossing(const Scene2D& scene, const Point2& center, int w, int crossing);

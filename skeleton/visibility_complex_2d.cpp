@@ -12,7 +12,8 @@
 
 namespace exactvis {
 
-SegmentEnd2D first_contact(const Scene2D& s, int v, const Point2& d0, const Point2& d1) {
+SegmentEnd2D first_contact(const Scene2D& s, int v, const Point2& d0, const Point2& d1,
+                           const std::vector<int>* edges) {
   const auto& P = s.points;
   const Point2& o = P[v];
   const Point2 t1(o.x + (d1.x - d0.x), o.y + (d1.y - d0.y));  // o + d
@@ -26,7 +27,9 @@ SegmentEnd2D first_contact(const Scene2D& s, int v, const Point2& d0, const Poin
     best.object = s.object_of(id);
   };
   const Exact dx = d1.x - d0.x, dy = d1.y - d0.y;
-  for (int e = 0; e < s.num_vertices(); ++e) {
+  const int count = edges ? static_cast<int>(edges->size()) : s.num_vertices();
+  for (int i = 0; i < count; ++i) {
+    const int e = edges ? (*edges)[i] : i;
     const int a = e, b = s.next[e];
     if (a == v || b == v) continue;
     const Sign oa = orientation2(o, t1, P[a]), ob = orientation2(o, t1, P[b]);
@@ -146,15 +149,17 @@ VisibilityComplex2D visibility_complex(const Scene2D& s, void (*progress)(double
         const std::size_t first = from ? from_pos : 0, last = to ? to_pos : chain.size() - 1;
         bool found = false;
         auto try_range = [&](int v, const Point2& lo0, const Point2& lo1, const Point2& hi0, const Point2& hi1) {
-          if (found || turn[v] != Sign::Positive) return;
+          if (turn[v] != Sign::Positive) return;
           if (cross_sign(lo0, lo1, hi0, hi1) != Sign::Positive) return;  // empty sub-range
+          edge.pivots.push_back(v);
+          if (found) return;
           edge.pivot = v;
           edge.sample_from = P[v];
           edge.sample_to = add_dirs(P[v], lo0, lo1, hi0, hi1);
           found = true;
         };
         const std::size_t span = wraps ? last + chain.size() - first : last - first;
-        for (std::size_t k = 0; k <= span && !found; ++k) {
+        for (std::size_t k = 0; k <= span; ++k) {
           const int v = chain[(first + k) % chain.size()];
           Point2 lo0, lo1, hi0, hi1;
           range_start(v, lo0, lo1);

@@ -26,6 +26,9 @@ struct ComplexEdge2D {
   int chain = 0;
   std::array<int, 2> vertices{-1, -1};  // bitangent ids at the start / end (-1: terminal or closed edge)
   int pivot = 0;                        // a scene vertex the sample segment is tangent at
+  // every convex vertex of the chain whose tangent lines this edge contains (a non-empty sub-range of its
+  // directions), in chain order; `pivot` is the first of them
+  std::vector<int> pivots;
   Point2 sample_from, sample_to;        // direction of the sample tangent line (sample_to - sample_from)
   bool degenerate = false;              // zero length (two bitangents on one line through the pivot)
   // objects met by the sample line beyond the pivot, backwards and forwards (-1: infinity)
@@ -66,7 +69,9 @@ VisibilityComplex2D visibility_complex(const Scene2D& scene, void (*progress)(do
                                        VisibilityGraphMethod method = VisibilityGraphMethod::RotationalSweep);
 
 // First boundary point on the ray from scene vertex v in direction d1 - d0 (v's own edges are ignored;
-// the ray must not run along them). Exact, O(n).
-SegmentEnd2D first_contact(const Scene2D& scene, int v, const Point2& d0, const Point2& d1);
+// the ray must not run along them). Exact, O(n); with `edges` (ids of ring edges) only those are tested,
+// O(edges.size()).
+SegmentEnd2D first_contact(const Scene2D& scene, int v, const Point2& d0, const Point2& d1,
+                           const std::vector<int>* edges = nullptr);
 
 }  // namespace exactvis
