@@ -1,9 +1,11 @@
-// `exactvis visibility2d SCENE2D --from X,Y [--slice z=V] [--svg out.svg] [--margin R]`: the exact
-// visibility polygon of a point, as JSON; or with --from-segment/--to-segment, segment-to-segment visibility
+// `exactvis visibility2d SCENE2D --from X,Y [--method complex|sweep] [--slice z=V] [--svg out.svg] [--margin R]`:
+// the exact visibility polygon of a point, as JSON (by default answered by a walk in the scene's visibility
+// complex; `sweep`: one angular sweep around the point; both give the same polygon); or with --from-segment/--to-segment, segment-to-segment visibility
 // with an exact witness (docs/cli.md).
 #include "apps/command_registry.hpp"
 #include "io/scene2d_json.hpp"
 #include "io/svg_2d.hpp"
+#include "skeleton/complex_walk_2d.hpp"
 #include "skeleton/segment_visibility_2d.hpp"
 #include "skeleton/visibility_polygon_2d.hpp"
 
@@ -17,7 +19,7 @@ namespace {
 using namespace exactvis;
 
 struct Visibility2DOptions {
-  std::string scene, slice, from, svg, from_segment, to_segment;
+  std::string scene, slice, from, svg, from_segment, to_segment, method = "complex";
   double margin = 0.5;
 };
 
@@ -92,6 +94,8 @@ int run(const Visibility2DOptions& o) {
     throw std::invalid_argument("--from-segment and --to-segment go together");
   if (segments) return run_segments(o);
   if (o.from.empty()) throw std::invalid_argument("give --from X,Y (or --from-segment and --to-segment)");
+  if (o.method != "complex" && o.method != "sweep")
+    throw std::invalid_argument("--method must be complex or sweep (got '" + o.method + "')");
   const Point2 q = parse_point(o.from);
   const Scene2D base = load_scene2d(o.scene, o.slice);
   // the frame must contain q strictly: widen it until it does
@@ -104,7 +108,17 @@ int run(const Visibility2DOptions& o) {
     margin = 2 * margin + 1;
     scene = with_frame(base, margin);
   }
-  const VisibilityPolygon2D vp = visibility_polygon(scene, q);  // throws for q inside an object / on a boundary
+  // both throw std::invalid_argument for q inside an object / on a boundary
+  VisibilityPolygon2D vp;
+  std::vector<int> seen;
+  if (o.method == "complex") {
+    const VisibilityComplex2D cx = visibility_complex(base);
+    const ComplexWalkIndex2D index = complex_walk_index(base, cx);
+    vp = visibility_polygon_in_complex(index, scene, q, nullptr, &seen);
+  } else {
+    vp = visibility_polygon(scene, q);
+    seen = visible_edges(scene, q);
+  }
   ojson j;
   j["from"] = point_json(q);
   j["polygon"] = ojson::array();
@@ -112,7 +126,7 @@ int run(const Visibility2DOptions& o) {
   const Ring2D& fr = scene.rings[scene.frame_ring];
   j["frame"] = {point_json(scene.points[fr.first]), point_json(scene.points[fr.first + 2])};
   j["visible_edges"] = ojson::array();
-  for (int e : visible_edges(scene, q))
+  for (int e : seen)
     if (scene.ring_of[e] != scene.frame_ring)
       j["visible_edges"].push_back({{"edge", e}, {"object", scene.object_of(e)},
                                     {"a", point_json(scene.points[e])}, {"b", point_json(scene.points[scene.next[e]])}});
@@ -138,6 +152,9 @@ const exactvis::app::CommandRegistration registration(
       sub->add_option("--from-segment", opts->from_segment, "segment S as X0,Y0,X1,Y1: does S see --to-segment?");
       sub->add_option("--to-segment", opts->to_segment, "segment T as X0,Y0,X1,Y1");
       sub->add_option("--slice", opts->slice, "section of a 3D scene by a plane: x=V, y=V or z=V");
+      sub->add_option("--method", opts->method,
+                      "complex (default): walk in the scene's visibility complex; sweep: one angular sweep around "
+                      "the point (same polygon)");
       sub->add_option("--margin", opts->margin, "frame margin around the scene, relative to its size (default 0.5)");
       sub->add_option("--svg", opts->svg, "write a picture of the visibility polygon");
       return [opts] { return run(*opts); };

@@ -273,7 +273,7 @@ struct Walk {
 }  // namespace
 
 VisibilityPolygon2D visibility_polygon_in_complex(const ComplexWalkIndex2D& ix, const Scene2D& s, const Point2& q,
-                                                  ComplexWalkStats2D* stats) {
+                                                  ComplexWalkStats2D* stats, std::vector<int>* visible_edges) {
   const int n = ix.scene->num_vertices();
   if (s.frame_ring < 0 || s.num_vertices() != n + 4 || s.rings[s.frame_ring].first != n)
     throw std::invalid_argument("complex walk needs with_frame() of the scene the complex was built on");
@@ -286,6 +286,7 @@ VisibilityPolygon2D visibility_polygon_in_complex(const ComplexWalkIndex2D& ix, 
   const Point2 east(q.x + 1, q.y), west(q.x - 1, q.y);
   int edge[2] = {W.edge_hit_before(Dir{&q, &east}), W.edge_hit_before(Dir{&q, &west})};  // front, back
   std::vector<Point2> out[2];
+  std::vector<int> seen{edge[0], edge[1]};
   Dir current{};
   bool started = false;
   static const std::vector<int> none;
@@ -352,8 +353,8 @@ VisibilityPolygon2D visibility_polygon_in_complex(const ComplexWalkIndex2D& ix, 
         if (out[side].empty() || out[side].back() != p) out[side].push_back(p);
       }
       edge[side] = next;
+      seen.push_back(next);
     }
-    // the best direction points into `current`; keep it valid (it refers to q or to scene points)
   }
   VisibilityPolygon2D vp;
   for (int side = 0; side < 2; ++side)
@@ -361,6 +362,11 @@ VisibilityPolygon2D visibility_polygon_in_complex(const ComplexWalkIndex2D& ix, 
       if (vp.vertices.empty() || vp.vertices.back() != p) vp.vertices.push_back(std::move(p));
   while (vp.vertices.size() > 1 && vp.vertices.back() == vp.vertices.front()) vp.vertices.pop_back();
   if (stats) *stats = st;
+  if (visible_edges) {
+    std::sort(seen.begin(), seen.end());
+    seen.erase(std::unique(seen.begin(), seen.end()), seen.end());
+    *visible_edges = std::move(seen);
+  }
   return vp;
 }
 

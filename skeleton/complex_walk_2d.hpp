@@ -56,7 +56,10 @@ struct ComplexWalkStats2D {
 // free point inside it (std::invalid_argument otherwise). Cost: O(n) to locate the start segment (an
 // exact scan of all edges: no point location structure), then per step of the walk O(candidates of the
 // face + log n), plus O(size of the object) to find the hit on an object appearing behind a silhouette.
+// If `visible_edges` is given, it receives the ids of the edges of which q sees a part of positive length
+// (sorted; frame edges included), equal to visible_edges(framed, q).
 VisibilityPolygon2D visibility_polygon_in_complex(const ComplexWalkIndex2D& index, const Scene2D& framed,
-                                                  const Point2& q, ComplexWalkStats2D* stats = nullptr);
+                                                  const Point2& q, ComplexWalkStats2D* stats = nullptr,
+                                                  std::vector<int>* visible_edges = nullptr);
 
 }  // namespace exactvis
