@@ -5,6 +5,7 @@
 #include "apps/command_registry.hpp"
 #include "io/scene2d_json.hpp"
 #include "io/svg_2d.hpp"
+#include "skeleton/complex_segment_visibility_2d.hpp"
 #include "skeleton/complex_walk_2d.hpp"
 #include "skeleton/segment_visibility_2d.hpp"
 #include "skeleton/visibility_polygon_2d.hpp"
@@ -66,7 +67,14 @@ int run_segments(const Visibility2DOptions& o) {
   const auto S = parse_segment(o.from_segment, "--from-segment");
   const auto T = parse_segment(o.to_segment, "--to-segment");
   const Scene2D scene = load_scene2d(o.scene, o.slice);
-  const SegmentVisibility2D r = segment_visibility(scene, S[0], S[1], T[0], T[1]);
+  SegmentVisibility2D r;
+  if (o.method == "complex") {
+    const VisibilityComplex2D cx = visibility_complex(scene);
+    const ComplexWalkIndex2D index = complex_walk_index(scene, cx);
+    r = segment_visibility_in_complex(index, S[0], S[1], T[0], T[1]);
+  } else {
+    r = segment_visibility(scene, S[0], S[1], T[0], T[1]);
+  }
   ojson j;
   j["from_segment"] = {point_json(S[0]), point_json(S[1])};
   j["to_segment"] = {point_json(T[0]), point_json(T[1])};
@@ -88,14 +96,14 @@ int run_segments(const Visibility2DOptions& o) {
 
 int run(const Visibility2DOptions& o) {
   if (!(o.margin >= 0)) throw std::invalid_argument("--margin must be >= 0");
+  if (o.method != "complex" && o.method != "sweep")
+    throw std::invalid_argument("--method must be complex or sweep (got '" + o.method + "')");
   const bool segments = !o.from_segment.empty() || !o.to_segment.empty();
   if (segments && !o.from.empty()) throw std::invalid_argument("use either --from or --from-segment/--to-segment");
   if (segments && (o.from_segment.empty() || o.to_segment.empty()))
     throw std::invalid_argument("--from-segment and --to-segment go together");
   if (segments) return run_segments(o);
   if (o.from.empty()) throw std::invalid_argument("give --from X,Y (or --from-segment and --to-segment)");
-  if (o.method != "complex" && o.method != "sweep")
-    throw std::invalid_argument("--method must be complex or sweep (got '" + o.method + "')");
   const Point2 q = parse_point(o.from);
   const Scene2D base = load_scene2d(o.scene, o.slice);
   // the frame must contain q strictly: widen it until it does
@@ -153,8 +161,8 @@ const exactvis::app::CommandRegistration registration(
       sub->add_option("--to-segment", opts->to_segment, "segment T as X0,Y0,X1,Y1");
       sub->add_option("--slice", opts->slice, "section of a 3D scene by a plane: x=V, y=V or z=V");
       sub->add_option("--method", opts->method,
-                      "complex (default): walk in the scene's visibility complex; sweep: one angular sweep around "
-                      "the point (same polygon)");
+                      "complex (default): answer from the scene's visibility complex; sweep: one angular sweep "
+                      "around the point, or the O(n^4) cell sampling for segments (same answers)");
       sub->add_option("--margin", opts->margin, "frame margin around the scene, relative to its size (default 0.5)");
       sub->add_option("--svg", opts->svg, "write a picture of the visibility polygon");
       return [opts] { return run(*opts); };

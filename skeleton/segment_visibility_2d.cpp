@@ -10,13 +10,13 @@ bool open_segment_free(const Scene2D& s, const Point2& a, const Point2& b) {
   return true;
 }
 
-namespace {
-
-void check_segment(const Scene2D& s, const Point2& a, const Point2& b, const char* name) {
+void require_free_segment(const Scene2D& s, const Point2& a, const Point2& b, const char* name) {
   if (a == b) throw std::invalid_argument(std::string(name) + " has zero length");
   if (!open_segment_free(s, a, b)) throw std::invalid_argument(std::string(name) + " meets a polygon boundary");
   if (inside_obstacle(s, a)) throw std::invalid_argument(std::string(name) + " lies inside an object");
 }
+
+namespace {
 
 // Sorted distinct values of `v` inside (0, 1), with 0 and 1 added.
 std::vector<Exact> breakpoints(std::vector<Exact> v) {
@@ -34,8 +34,8 @@ Exact cross(const Exact& ax, const Exact& ay, const Exact& bx, const Exact& by) 
 
 SegmentVisibility2D segment_visibility(const Scene2D& scene, const Point2& s0, const Point2& s1, const Point2& t0,
                                        const Point2& t1) {
-  check_segment(scene, s0, s1, "segment S");
-  check_segment(scene, t0, t1, "segment T");
+  require_free_segment(scene, s0, s1, "segment S");
+  require_free_segment(scene, t0, t1, "segment T");
   SegmentVisibility2D out;
   const Exact sdx = s1.x - s0.x, sdy = s1.y - s0.y, tdx = t1.x - t0.x, tdy = t1.y - t0.y;
   std::vector<const Point2*> pts;

@@ -27,6 +27,10 @@ struct SegmentVisibility2D {
 SegmentVisibility2D segment_visibility(const Scene2D& scene, const Point2& s0, const Point2& s1, const Point2& t0,
                                        const Point2& t1);
 
+// Throws std::invalid_argument("<name> has zero length / meets a polygon boundary / lies inside an object")
+// unless [a, b] has positive length, meets no polygon boundary and lies outside the objects. O(n).
+void require_free_segment(const Scene2D& scene, const Point2& a, const Point2& b, const char* name);
+
 // True iff the open segment (s, t) meets no boundary point (s and t must not lie on a boundary); with s
 // outside the objects this means the segment lies in the open free space. Exact, O(n).
 bool open_segment_free(const Scene2D& scene, const Point2& s, const Point2& t);
