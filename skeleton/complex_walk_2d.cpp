@@ -98,11 +98,16 @@ struct Walk {
   const std::vector<Point2>& P() const { return s.points; }
   int object_or_infinity(int e) const { return e >= n ? -1 : s.object_of(e); }
 
-  // The edge hit by the ray from q in direction R turned clockwise by an infinitesimal angle: O(n).
-  int edge_hit_before(const Dir& R) const {
+  // The edge hit by the ray from q in direction R = (+-1, 0) turned clockwise by an infinitesimal angle:
+  // O(n), edges whose y-range misses q's or lying wholly behind q rejected first from interval enclosures.
+  int edge_hit_before(const Dir& R, bool east) const {
     int best = -1;
     for (int e = 0; e < s.num_vertices(); ++e) {
       int a = e, b = s.next[e];
+      const Point2 &pa = P()[a], &pb = P()[b];
+      if (std::max(pa.iy.sup(), pb.iy.sup()) < q.iy.inf() || std::min(pa.iy.inf(), pb.iy.inf()) > q.iy.sup()) continue;
+      if (east ? std::max(pa.ix.sup(), pb.ix.sup()) < q.ix.inf() : std::min(pa.ix.inf(), pb.ix.inf()) > q.ix.sup())
+        continue;
       const Sign o = orientation2(q, P()[a], P()[b]);
       if (o == Sign::Zero) continue;
       if (o == Sign::Negative) std::swap(a, b);
@@ -221,6 +226,47 @@ struct Walk {
     throw std::logic_error("complex walk: no complex edge holds a tangent line (bug)");
   }
 
+  // First contact of the ray from vertex y in direction R with the given edges (y's own edges skipped): a
+  // vertex on the ray or an edge crossed in its interior, compared by orientation tests only (the scene's
+  // edges are disjoint, so of two edges crossing the ray one lies on y's side of the other's line).
+  SegmentEnd2D nearest_contact(int y, const Dir& R, const std::vector<int>& edges) const {
+    const Point2& o = P()[y];
+    SegmentEnd2D best;
+    auto side_of_y = [&](int e, const Point2& p) {  // p strictly on y's side of edge e's line
+      const Sign sp = orientation2(P()[e], P()[s.next[e]], p);
+      return sp != Sign::Zero && sp == orientation2(P()[e], P()[s.next[e]], o);
+    };
+    auto nearer = [&](const SegmentEnd2D& c) {  // c before best along the ray
+      if (best.kind == SegmentEnd2D::Infinity) return true;
+      if (c.kind == SegmentEnd2D::Vertex && best.kind == SegmentEnd2D::Vertex)
+        return dot_sign(P()[c.id], P()[best.id], *R.from, *R.to) == Sign::Positive;
+      if (c.kind == SegmentEnd2D::Vertex) return side_of_y(best.id, P()[c.id]);
+      if (best.kind == SegmentEnd2D::Vertex) return !side_of_y(c.id, P()[best.id]);
+      return edge_closer(s, o, c.id, best.id);
+    };
+    auto ahead = [&](int v) { return dot_sign(o, P()[v], *R.from, *R.to) == Sign::Positive; };
+    for (int e : edges) {
+      const int a = e, b = s.next[e];
+      if (a == y || b == y) continue;
+      const Sign oa = cross_sign(*R.from, *R.to, o, P()[a]), ob = cross_sign(*R.from, *R.to, o, P()[b]);
+      if (oa != Sign::Zero && oa == ob) continue;
+      SegmentEnd2D c;
+      if (oa == Sign::Zero || ob == Sign::Zero) {
+        for (int v : {a, b}) {
+          if ((v == a ? oa : ob) != Sign::Zero || !ahead(v)) continue;
+          c.kind = SegmentEnd2D::Vertex, c.id = v;
+          if (nearer(c)) best = c;
+        }
+        continue;
+      }
+      // proper crossing of the line: ahead iff y lies on the side of e's line opposite to the direction
+      if (cross_sign(o, P()[a], P()[a], P()[b]) != cross_sign(*R.from, *R.to, P()[a], P()[b])) continue;
+      c.kind = SegmentEnd2D::EdgeInterior, c.id = e;
+      if (nearer(c)) best = c;
+    }
+    return best;
+  }
+
   // The edge met by the ray from q in direction R, turned counterclockwise by an infinitesimal, given that
   // the ray at R reaches vertex y with nothing before it.
   int resolve(int y, const Dir& R) const {
@@ -247,7 +293,7 @@ struct Walk {
       }
       if (!have_end) {
         const int obj = object_beyond(y, R);
-        end = first_contact(s, y, *R.from, *R.to, obj < 0 ? &frame_edges : &ix.object_edges[obj]);
+        end = nearest_contact(y, R, obj < 0 ? frame_edges : ix.object_edges[obj]);
         if (end.kind == SegmentEnd2D::Infinity)
           throw std::logic_error("complex walk: the ray misses the object the complex names (bug)");
       }
@@ -257,7 +303,7 @@ struct Walk {
         continue;
       }
       if (end.kind == SegmentEnd2D::Infinity) {
-        end = first_contact(s, y, *R.from, *R.to, &frame_edges);
+        end = nearest_contact(y, R, frame_edges);
         if (end.kind == SegmentEnd2D::EdgeInterior) return end.id;
         if (end.kind == SegmentEnd2D::Vertex) {
           y = end.id;
@@ -284,7 +330,7 @@ VisibilityPolygon2D visibility_polygon_in_complex(const ComplexWalkIndex2D& ix, 
   ComplexWalkStats2D st;
   // start: the line through q at direction 0 turned clockwise: front ray (1, -0), back ray (-1, +0)
   const Point2 east(q.x + 1, q.y), west(q.x - 1, q.y);
-  int edge[2] = {W.edge_hit_before(Dir{&q, &east}), W.edge_hit_before(Dir{&q, &west})};  // front, back
+  int edge[2] = {W.edge_hit_before(Dir{&q, &east}, true), W.edge_hit_before(Dir{&q, &west}, false)};  // front, back
   std::vector<Point2> out[2];
   std::vector<int> seen{edge[0], edge[1]};
   Dir current{};

@@ -24,13 +24,26 @@ Exact twice_area(const std::vector<Point2>& r) {
   return a;
 }
 
+// a.y > p.y, exact; decided from the interval enclosures when they do not overlap.
+bool above(const Point2& a, const Point2& p) {
+  if (a.iy.inf() > p.iy.sup()) return true;
+  if (a.iy.sup() < p.iy.inf()) return false;
+  return a.y > p.y;
+}
+
+// p certainly outside the bounding box of segment ab (interval enclosures; never wrong, may say false).
+bool outside_box(const Point2& a, const Point2& b, const Point2& p) {
+  return p.ix.sup() < std::min(a.ix.inf(), b.ix.inf()) || p.ix.inf() > std::max(a.ix.sup(), b.ix.sup()) ||
+         p.iy.sup() < std::min(a.iy.inf(), b.iy.inf()) || p.iy.inf() > std::max(a.iy.sup(), b.iy.sup());
+}
+
 // Crossing-number test; p must not lie on the ring. Exact.
 bool inside_ring(const std::vector<Point2>& pts, int first, int size, const Point2& p) {
   bool in = false;
   for (int i = 0; i < size; ++i) {
     const Point2& a = pts[first + i];
     const Point2& b = pts[first + (i + 1) % size];
-    const bool a_above = a.y > p.y, b_above = b.y > p.y;
+    const bool a_above = above(a, p), b_above = above(b, p);
     if (a_above == b_above) continue;
     // edge crosses the horizontal line through p; is the crossing right of p?
     const Sign o = orientation2(a, b, p);
@@ -43,6 +56,7 @@ bool on_ring(const std::vector<Point2>& pts, int first, int size, const Point2& 
   for (int i = 0; i < size; ++i) {
     const Point2& a = pts[first + i];
     const Point2& b = pts[first + (i + 1) % size];
+    if (outside_box(a, b, p)) continue;
     if (orientation2(a, b, p) == Sign::Zero && dot_sign(p, a, p, b) != Sign::Positive) return true;
   }
   return false;
