@@ -21,6 +21,28 @@ PredicateCounter::PredicateCounter(std::string n) : name(std::move(n)) {
   registry().push_back(this);
 }
 
+unsigned PredicateCounter::thread_slot() {
+  static std::atomic<unsigned> next{0};
+  thread_local const unsigned slot = next.fetch_add(1, std::memory_order_relaxed) % kSlots;
+  return slot;
+}
+
+std::uint64_t PredicateCounter::calls() const {
+  std::uint64_t t = 0;
+  for (const Slot& s : slots) t += s.calls.load(std::memory_order_relaxed);
+  return t;
+}
+
+std::uint64_t PredicateCounter::exact() const {
+  std::uint64_t t = 0;
+  for (const Slot& s : slots) t += s.exact.load(std::memory_order_relaxed);
+  return t;
+}
+
+void PredicateCounter::reset() {
+  for (Slot& s : slots) s.calls = 0, s.exact = 0;
+}
+
 std::vector<PredicateCounterSnapshot> predicate_counters() {
   std::lock_guard<std::mutex> lock(registry_mutex());
   // One entry per name: a predicate implemented as a template (double and Exact inputs) has one counter per
@@ -29,8 +51,8 @@ std::vector<PredicateCounterSnapshot> predicate_counters() {
   for (auto* c : registry()) {
     auto it = std::find_if(out.begin(), out.end(), [&](const auto& s) { return s.name == c->name; });
     if (it == out.end()) it = out.insert(out.end(), {c->name, 0, 0});
-    it->calls += c->calls.load();
-    it->exact += c->exact.load();
+    it->calls += c->calls();
+    it->exact += c->exact();
   }
   return out;
 }

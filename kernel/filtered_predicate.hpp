@@ -19,12 +19,22 @@
 
 namespace exactvis {
 
+// Calls and exact fallbacks of one predicate. The counts are striped over a few cache lines, one per thread
+// slot, so that threads evaluating the same predicate do not fight over one shared counter.
 struct PredicateCounter {
+  static constexpr unsigned kSlots = 8;
+  struct alignas(64) Slot {
+    std::atomic<std::uint64_t> calls{0};
+    std::atomic<std::uint64_t> exact{0};  // evaluations where the filter could not decide
+  };
   std::string name;
-  std::atomic<std::uint64_t> calls{0};
-  std::atomic<std::uint64_t> exact{0};  // evaluations where the filter could not decide
+  Slot slots[kSlots];
   explicit PredicateCounter(std::string n);
-  void reset() { calls = 0; exact = 0; }
+  Slot& mine() { return slots[thread_slot()]; }
+  std::uint64_t calls() const;
+  std::uint64_t exact() const;
+  void reset();
+  static unsigned thread_slot();
 };
 
 struct PredicateCounterSnapshot {
@@ -54,7 +64,8 @@ struct NumberTag {
 // same exact value several times faster (see docs/performance.md, "Predicates").
 template <class ExactNT = Exact, class Expr>
 Sign filtered_sign(PredicateCounter& counter, Expr&& expr) {
-  counter.calls.fetch_add(1, std::memory_order_relaxed);
+  PredicateCounter::Slot& slot = counter.mine();
+  slot.calls.fetch_add(1, std::memory_order_relaxed);
   if (filter_enabled()) {
     CGAL::Protect_FPU_rounding<true> guard;
     const Interval r = expr(NumberTag<Interval>{});
@@ -62,7 +73,7 @@ Sign filtered_sign(PredicateCounter& counter, Expr&& expr) {
     if (r.sup() < 0) return Sign::Negative;
     if (r.inf() == 0 && r.sup() == 0) return Sign::Zero;
   }
-  counter.exact.fetch_add(1, std::memory_order_relaxed);
+  slot.exact.fetch_add(1, std::memory_order_relaxed);
   const ExactNT e = expr(NumberTag<ExactNT>{});
   return sign_of(static_cast<int>(CGAL::sign(e)));
 }

@@ -2,7 +2,10 @@
 
 #include "skeleton/angular_sweep_2d.hpp"
 
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
+#include <exception>
 #include <stdexcept>
 
 namespace exactvis {
@@ -414,6 +417,23 @@ VisibilityPolygon2D visibility_polygon_in_complex(const ComplexWalkIndex2D& ix, 
     *visible_edges = std::move(seen);
   }
   return vp;
+}
+
+std::vector<VisibilityPolygon2D> visibility_polygons_in_complex(const ComplexWalkIndex2D& index,
+                                                                const Scene2D& framed,
+                                                                const std::vector<Point2>& points) {
+  std::vector<VisibilityPolygon2D> out(points.size());
+  std::vector<std::exception_ptr> errors(points.size());
+  tbb::parallel_for(std::size_t(0), points.size(), [&](std::size_t i) {
+    try {
+      out[i] = visibility_polygon_in_complex(index, framed, points[i]);
+    } catch (...) {
+      errors[i] = std::current_exception();
+    }
+  });
+  for (const auto& e : errors)
+    if (e) std::rethrow_exception(e);
+  return out;
 }
 
 }  // namespace exactvis

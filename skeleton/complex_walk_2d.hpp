@@ -62,4 +62,10 @@ VisibilityPolygon2D visibility_polygon_in_complex(const ComplexWalkIndex2D& inde
                                                   const Point2& q, ComplexWalkStats2D* stats = nullptr,
                                                   std::vector<int>* visible_edges = nullptr);
 
+// visibility_polygon_in_complex for many points, on all cores (oneTBB; the index is read-only). Throws
+// std::invalid_argument for the first bad point, like the single query.
+std::vector<VisibilityPolygon2D> visibility_polygons_in_complex(const ComplexWalkIndex2D& index,
+                                                                const Scene2D& framed,
+                                                                const std::vector<Point2>& points);
+
 }  // namespace exactvis
