@@ -8,7 +8,7 @@ namespace exactvis {
 
 // Counters of one query.
 struct ComplexSegmentStats2D {
-  std::size_t breakpoints = 0;  // sigma values on S from the visibility graph (before sorting / dedup)
+  std::size_t breakpoints = 0;  // lines tested against S (visible pairs, ring edges, t0/t1 lines), before (0,1) cut
   std::size_t walks = 0;        // visibility polygons walked (one per gap of sigma, until a witness)
 };
 
