@@ -8,7 +8,7 @@ namespace exactvis {
 
 // Counters of one query.
 struct ComplexSegmentStats2D {
-  std::size_t breakpoints = 0;  // lines tested against S (visible pairs, ring edges, t0/t1 lines), before (0,1) cut
+  std::size_t breakpoints = 0;  // sigmas computed (lines of visible pairs, ring edges, t0/t1 not parallel to S)
   std::size_t walks = 0;        // visibility polygons walked (one per gap of sigma, until a witness)
 };
 
