@@ -1,9 +1,15 @@
 #pragma once
-// Test helpers: oracle scenes (plain doubles) to exactvis Scene2D and back to exact gmpxx points.
+// Test helpers: oracle scenes (plain doubles) to exactvis Scene2D and back to exact gmpxx points, and the
+// random degenerate scene generators shared by the 2D suites (boxes with flat vertices and holes, triangles
+// on a small grid).
 #include "oracles/visibility2d_oracle.hpp"
 #include "skeleton/scene2d.hpp"
 
+#include <array>
+#include <cstdint>
 #include <optional>
+#include <random>
+#include <vector>
 
 namespace exactvis::test2d {
 
@@ -44,6 +50,59 @@ inline oracle2d::Polygon frame_polygon(const Scene2D& framed) {
   }
   oracle2d::Ring outer{{lo_x - 1, lo_y - 1}, {hi_x + 1, lo_y - 1}, {hi_x + 1, hi_y + 1}, {lo_x - 1, hi_y + 1}};
   return {{outer, hole}};
+}
+
+// Axis-parallel box ring.
+inline oracle2d::Ring box(double x0, double y0, double x1, double y1) { return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}; }
+
+// Axis-parallel rectangles on a small integer grid, some with flat vertices at edge midpoints (parallel
+// and collinear edges everywhere), some with a rectangular hole holding an island.
+inline std::vector<oracle2d::Polygon> random_box_scene(std::uint64_t seed, int count) {
+  std::mt19937_64 rng(seed);
+  auto uni = [&](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); };
+  std::vector<oracle2d::Polygon> out;
+  std::vector<std::array<int, 4>> used;
+  for (int tries = 0; tries < 50 && static_cast<int>(out.size()) < count; ++tries) {
+    const int x0 = 2 * uni(0, 8), y0 = 2 * uni(0, 8), w = 2 * uni(1, 3), h = 2 * uni(1, 3);
+    const std::array<int, 4> r{x0, y0, x0 + w, y0 + h};
+    bool clash = false;
+    for (const auto& u : used)
+      if (r[0] <= u[2] && u[0] <= r[2] && r[1] <= u[3] && u[1] <= r[3]) clash = true;
+    if (clash) continue;
+    used.push_back(r);
+    const int type = uni(0, 3);
+    if (type == 0 && w >= 6 && h >= 6) {  // ring with a hole and an island
+      out.push_back({{box(r[0], r[1], r[2], r[3]), box(r[0] + 1, r[1] + 1, r[2] - 1, r[3] - 1)}});
+      out.push_back({{box(r[0] + 2, r[1] + 2, r[0] + 3, r[1] + 3)}});
+    } else if (type == 1) {  // flat vertices at the midpoints
+      const double mx = (r[0] + r[2]) / 2.0, my = (r[1] + r[3]) / 2.0;
+      out.push_back({{{{double(r[0]), double(r[1])}, {mx, double(r[1])}, {double(r[2]), double(r[1])},
+                       {double(r[2]), my}, {double(r[2]), double(r[3])}, {mx, double(r[3])},
+                       {double(r[0]), double(r[3])}, {double(r[0]), my}}}});
+    } else if (type == 2) {  // an L shape (non-convex)
+      out.push_back({{{{double(r[0]), double(r[1])}, {double(r[2]), double(r[1])}, {double(r[2]), r[1] + h / 2.0},
+                       {r[0] + w / 2.0, r[1] + h / 2.0}, {r[0] + w / 2.0, double(r[3])},
+                       {double(r[0]), double(r[3])}}}});
+    } else {
+      out.push_back({{box(r[0], r[1], r[2], r[3])}});
+    }
+  }
+  return out;
+}
+
+// Triangles with vertices on a 7 x 7 grid: many collinear triples and parallel edges across objects.
+inline std::vector<oracle2d::Polygon> random_triangle_scene(std::uint64_t seed, int count) {
+  std::mt19937_64 rng(seed);
+  auto uni = [&](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); };
+  std::vector<oracle2d::Polygon> out;
+  for (int tries = 0; tries < 200 && static_cast<int>(out.size()) < count; ++tries) {
+    oracle2d::Ring t{{double(uni(0, 6)), double(uni(0, 6))}, {double(uni(0, 6)), double(uni(0, 6))},
+                     {double(uni(0, 6)), double(uni(0, 6))}};
+    auto candidate = out;
+    candidate.push_back({{t}});
+    if (try_scene(candidate)) out = std::move(candidate);
+  }
+  return out;
 }
 
 }  // namespace exactvis::test2d

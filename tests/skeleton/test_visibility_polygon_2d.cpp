@@ -1,12 +1,8 @@
 // Visibility polygons against CGAL's Triangular_expansion_visibility_2 and Rotational_sweep_visibility_2
 // (regularized) at thousands of random points, compared exactly; visible edge sets against the brute force.
-#include "scene2d_test_util.hpp"
+#include "cgal_visibility_test_util.hpp"
 #include "skeleton/visibility_polygon_2d.hpp"
 
-#include <CGAL/Arr_naive_point_location.h>
-#include <CGAL/Arr_segment_traits_2.h>
-#include <CGAL/Arrangement_2.h>
-#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Rotational_sweep_visibility_2.h>
 #include <CGAL/Triangular_expansion_visibility_2.h>
 #include <gtest/gtest.h>
@@ -18,49 +14,9 @@ using namespace exactvis::test2d;
 
 namespace {
 
-using K = CGAL::Exact_predicates_exact_constructions_kernel;
-using Traits = CGAL::Arr_segment_traits_2<K>;
-using Arr = CGAL::Arrangement_2<Traits>;
+using K = CgalK;
+using Arr = CgalArr;
 using Pt = oracle2d::Pt;
-
-Pt to_pt(const K::Point_2& p) {
-  return {mpq_class(CGAL::exact(p.x())), mpq_class(CGAL::exact(p.y()))};
-}
-
-// Cyclic polygon without repeated or collinear vertices, starting at its lexicographically smallest vertex.
-std::vector<Pt> normalize(std::vector<Pt> p) {
-  auto orient = [](const Pt& a, const Pt& b, const Pt& c) {
-    return mpq_sgn(mpq_class((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x)).get_mpq_t());
-  };
-  bool changed = true;
-  while (changed && p.size() >= 3) {
-    changed = false;
-    for (std::size_t i = 0; i < p.size() && p.size() >= 3; ++i) {
-      const Pt &a = p[(i + p.size() - 1) % p.size()], &b = p[i], &c = p[(i + 1) % p.size()];
-      if (a == b || orient(a, b, c) == 0) {
-        p.erase(p.begin() + i);
-        changed = true;
-        break;
-      }
-    }
-  }
-  std::rotate(p.begin(), std::min_element(p.begin(), p.end()), p.end());
-  return p;
-}
-
-std::vector<Pt> face_polygon(Arr::Face_handle f) {
-  std::vector<Pt> out;
-  auto c = f->outer_ccb();
-  do out.push_back(to_pt(c->source()->point()));
-  while (++c != f->outer_ccb());
-  return out;
-}
-
-std::string show(const std::vector<Pt>& p) {
-  std::string s;
-  for (const auto& q : p) s += "(" + q.x.get_str() + "," + q.y.get_str() + ") ";
-  return s;
-}
 
 struct Fixture {
   std::vector<oracle2d::Polygon> polys;  // scene + frame, for the oracle
@@ -75,12 +31,7 @@ bool make_fixture(std::uint64_t seed, int cells, Fixture& fx) {
   fx.framed = with_frame(*s, 0.1);
   fx.polys = polys;
   fx.polys.push_back(frame_polygon(fx.framed));
-  std::vector<Traits::Segment_2> segs;
-  for (int v = 0; v < fx.framed.num_vertices(); ++v) {
-    const Point2 &a = fx.framed.points[v], &b = fx.framed.points[fx.framed.next[v]];
-    segs.emplace_back(K::Point_2(a.ax, a.ay), K::Point_2(b.ax, b.ay));  // inputs are doubles here
-  }
-  CGAL::insert(fx.arr, segs.begin(), segs.end());
+  insert_scene_edges(fx.framed, fx.arr);  // inputs are doubles here
   return true;
 }
 
