@@ -1,7 +1,9 @@
 // bench_complex2d: 2D visibility complex construction time vs n and vs k, and visibility-polygon queries
-// per second (our exact angular sweep vs CGAL's Triangular_expansion_visibility_2) on the same scenes.
+// per second (our exact angular sweep, the walk in the stored complex, CGAL's
+// Triangular_expansion_visibility_2) on the same scenes.
 // Usage: bench_complex2d [--max-n N] [--max-old N] [--queries Q] (--max-old: largest n for the per-vertex
 // sweep). Prints tables (docs/performance.md).
+#include "skeleton/complex_walk_2d.hpp"
 #include "skeleton/visibility_complex_2d.hpp"
 #include "skeleton/visibility_polygon_2d.hpp"
 
@@ -12,6 +14,7 @@
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Triangular_expansion_visibility_2.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -148,12 +151,16 @@ int main(int argc, char** argv) {
   }
   std::printf("\n# 3. visibility polygon queries per second (grid layout, %d random free points)\n", queries);
   std::printf("#    single = one angular sweep per point; batch = visibility_polygons (one rotational sweep for\n"
-              "#    all points) on the same points, and on 10x as many points\n");
-  std::printf("%8s %12s %12s %14s %16s %12s %14s %8s\n", "n", "single q/s", "batch q/s", "batch10x q/s",
-              "CGAL TEV q/s", "us/q single", "us/q CGAL TEV", "ratio");
+              "#    all points) on the same points, and on 10x as many points; walk = visibility_polygon_in_complex\n"
+              "#    (walk in the stored complex; its one-time cost is in the last columns: complex s = visibility_complex,\n"
+              "#    index s = complex_walk_index; events/q, cand/q = mean hit-edge changes and candidate pivots tested)\n");
+  std::printf("%8s %12s %12s %14s %12s %16s %12s %12s %14s %8s %10s %10s %9s %9s\n", "n", "single q/s", "batch q/s",
+              "batch10x q/s", "walk q/s", "CGAL TEV q/s", "us/q single", "us/q walk", "us/q CGAL TEV", "ratio",
+              "complex s", "index s", "events/q", "cand/q");
   for (int n : {1024, 2048, 4096, 8192}) {
     if (n > 2 * max_n) break;
-    const Scene2D framed = with_frame(make_scene("grid", n / 8, 8, n), 0.05);
+    const Scene2D scene = make_scene("grid", n / 8, 8, n);
+    const Scene2D framed = with_frame(scene, 0.05);
     std::mt19937_64 rng(5);
     const Ring2D& fr = framed.rings[framed.frame_ring];
     const Point2 &lo = framed.points[fr.first], &hi = framed.points[fr.first + 2];
@@ -174,14 +181,32 @@ int main(int argc, char** argv) {
     const double tb1 = now();
     sink += visibility_polygons(framed, qs10).size();
     const double batch10 = qs10.size() / (now() - tb1);
+    // the walk: complex and index built once (timed apart), then the queries alone
+    const double tc0 = now();
+    const VisibilityComplex2D complex = visibility_complex(scene);
+    const double tc1 = now();
+    const ComplexWalkIndex2D index = complex_walk_index(scene, complex);
+    const double tc2 = now();
+    ComplexWalkStats2D total;
+    for (const Point2& q : qs) {
+      ComplexWalkStats2D st;
+      sink += visibility_polygon_in_complex(index, framed, q, &st).vertices.size();
+      total.events += st.events, total.faces += st.faces, total.candidates += st.candidates;
+    }
+    const double walk = qs.size() / (now() - tc2);
+    for (std::size_t i = 0; i < std::min<std::size_t>(qs.size(), 20); ++i)  // not timed: same output as the sweep
+      if (visibility_polygon_in_complex(index, framed, qs[i]).vertices != visibility_polygon(framed, qs[i]).vertices)
+        std::printf("MISMATCH walk/sweep at query %zu\n", i);
     double b1 = 0, b2 = 0;
     const double epeck = cgal_tev_queries_per_second<CGAL::Exact_predicates_exact_constructions_kernel>(framed, qs, &b2);
     std::fflush(stdout);
     // (CGAL TEV with Exact_predicates_inexact_constructions_kernel throws Bad_object_cast on these scenes,
     //  so the comparison uses the exact-constructions kernel, like our exact output.)
     (void)b1;
-    std::printf("%8d %12.1f %12.1f %14.1f %16.1f %12.1f %14.1f %8.2f\n", framed.num_vertices(), ours, batch, batch10,
-                epeck, 1e6 / ours, 1e6 / epeck, epeck / ours);
+    std::printf("%8d %12.1f %12.1f %14.1f %12.1f %16.1f %12.1f %12.1f %14.1f %8.2f %10.3f %10.3f %9.1f %9.1f\n",
+                framed.num_vertices(), ours, batch, batch10, walk, epeck, 1e6 / ours, 1e6 / walk, 1e6 / epeck,
+                epeck / ours, tc1 - tc0, tc2 - tc1, double(total.events) / qs.size(),
+                double(total.candidates) / qs.size());
     std::fflush(stdout);
     if (sink == 0) std::printf("(empty)\n");
   }
