@@ -177,7 +177,8 @@ Point2 on_line(const Point2& a, const Point2& b, const Exact& t) {
 // lines; points on the line of a free bitangent (on the bitangent itself and beyond its ends); on the
 // line through two scene vertices; on the line through a scene edge (outside the edge); at direction
 // (1,0), (-1,0), (0,1), (0,-1) from a scene vertex; crossings of two lines through vertex pairs or
-// bitangents, and of a bitangent line with the horizontal line through a vertex.
+// bitangents, and of such a line with the horizontal line through a vertex; on the line through a frame
+// corner and a scene vertex.
 std::vector<Query> query_points(const WalkScene& w, std::uint64_t seed, int per_kind) {
   std::mt19937_64 rng(seed);
   const Ring2D& fr = w.framed.rings[w.framed.frame_ring];
@@ -209,7 +210,7 @@ std::vector<Query> query_points(const WalkScene& w, std::uint64_t seed, int per_
     a = P[u], b = P[v];
   };
   std::vector<Query> out;
-  for (int kind = 0; kind < 8; ++kind) {
+  for (int kind = 0; kind < 9; ++kind) {
     if (n < 2 && kind >= 3) break;
     if (kind == 3 && bit.empty()) continue;
     int found = 0;
@@ -259,6 +260,12 @@ std::vector<Query> query_points(const WalkScene& w, std::uint64_t seed, int per_
           q = dir == 0 ? Point2(v.x + d, v.y) : dir == 1 ? Point2(v.x - d, v.y)
             : dir == 2 ? Point2(v.x, v.y + d) : Point2(v.x, v.y - d);
           name = dir < 2 ? "horizontal-from-vertex" : "vertical-from-vertex";
+          break;
+        }
+        case 8: {  // towards a frame corner: the ray from q through the vertex reaches the corner
+          const Point2& corner = w.framed.points[fr.first + uni(0, 3)];
+          q = on_line(corner, P[uni(0, n - 1)], std::array<Exact, 5>{ratio(1, 2), ratio(1, 3), ratio(3, 4), ratio(5, 4), ratio(3, 2)}[uni(0, 4)]);
+          name = "on-line-through-frame-corner";
           break;
         }
         default: {
@@ -466,6 +473,56 @@ TEST(ComplexWalk2D, TriangleScenesOnASmallGridMatchSweep) {
   EXPECT_GE(tally.brute_checked, 200);
 }
 
+TEST(ComplexWalk2D, ScenesWithRationalCoordinatesMatchSweep) {
+  // box and triangle scenes under exact rational maps that keep every collinearity: a rotation with
+  // cos = 3/5, sin = 4/5 (axis-parallel edges become slanted, other vertex lines become horizontal) and a
+  // scaling by 1/3 (coordinates no longer doubles)
+  Tally tally;
+  for (std::uint64_t seed = 1; seed <= 24; ++seed) {
+    const auto polys = seed % 2 ? random_box_scene(seed, 3 + seed % 5) : random_triangle_scene(seed, 3 + seed % 5);
+    auto input = to_input(polys);
+    const bool rotate = seed % 4 < 2;
+    for (auto& poly : input)
+      for (auto& ring : poly.rings)
+        for (Point2& p : ring)
+          p = rotate ? Point2((Exact(3) * p.x - Exact(4) * p.y) / 5, (Exact(4) * p.x + Exact(3) * p.y) / 5)
+                     : Point2(p.x / 3, p.y / 3);
+    const WalkScene w(std::string(seed % 2 ? "random_box_scene" : "random_triangle_scene") + "(seed " +
+                          std::to_string(seed) + ", " + std::to_string(3 + seed % 5) + ")" +
+                          (rotate ? " rotated by (3/5, 4/5)" : " scaled by 1/3"),
+                      make_scene2d(input), 0.2);
+    check_scene(w, query_points(w, seed, 12), tally, 0);
+  }
+  EXPECT_EQ(tally.failed, 0) << "of " << tally.checked << " queries";
+  EXPECT_GE(tally.checked, 2000);
+}
+
+TEST(ComplexWalk2D, OneIndexServesFramesOfAnyMargin) {
+  // the index is built on the scene without frame; queries may use with_frame(scene, m) for any m
+  Tally tally;
+  for (std::uint64_t seed = 1; seed <= 10; ++seed) {
+    const auto w = walk_scene("random_grid_scene(seed " + std::to_string(seed) + ")", oracle2d::random_grid_scene(seed, 2));
+    if (!w) continue;
+    for (double margin : {0.0, 0.05, 2.0}) {
+      const Scene2D framed = with_frame(w->scene, margin);
+      std::mt19937_64 rng(seed);
+      const Ring2D& fr = framed.rings[framed.frame_ring];
+      const Point2 &lo = framed.points[fr.first], &hi = framed.points[fr.first + 2];
+      for (int found = 0, tries = 0; found < 30 && tries < 300; ++tries) {
+        const Point2 q(std::round(4 * std::uniform_real_distribution<double>(lo.ax, hi.ax)(rng)) / 4,
+                       std::round(4 * std::uniform_real_distribution<double>(lo.ay, hi.ay)(rng)) / 4);
+        if (on_boundary(framed, q) || inside_obstacle(framed, q)) continue;
+        ++found, ++tally.checked;
+        const auto got = visibility_polygon_in_complex(w->index, framed, q).vertices;
+        if (got != visibility_polygon(framed, q).vertices)
+          tally.fail(w->name + ", margin " + std::to_string(margin) + ", q " + str(q));
+      }
+    }
+  }
+  EXPECT_EQ(tally.failed, 0) << "of " << tally.checked << " queries";
+  EXPECT_GE(tally.checked, 400);
+}
+
 TEST(ComplexWalk2D, RejectsBadInput) {
   const std::vector<oracle2d::Polygon> polys{{{box(0, 0, 10, 10), box(2, 2, 8, 8)}}, {{box(4, 4, 5, 5)}}};
   const auto w = walk_scene("box with a hole and an island", polys, 0.5);
@@ -517,6 +574,11 @@ TEST(ComplexWalk2D, CountersShowTheWalkTestsOnlyTheCandidatesOfItsFaces) {
   }
   EXPECT_EQ(tally.failed, 0) << "of " << tally.checked << " queries";
   EXPECT_GE(tally.checked, 40);
+  RecordProperty("n", static_cast<int>(n));
+  RecordProperty("events", static_cast<int>(events));
+  RecordProperty("faces", static_cast<int>(faces));
+  RecordProperty("candidates", static_cast<int>(candidates));
+  RecordProperty("largest_candidate_list", static_cast<int>(largest));
   EXPECT_LT(8 * candidates, n * events) << "n " << n << ", events " << events << ", faces " << faces
                                          << ", candidates " << candidates << ", largest list " << largest;
   // the same counters on small random scenes: events > 0 whenever there is an object
