@@ -10,6 +10,8 @@
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 
 #include <algorithm>
+#include <type_traits>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -18,6 +20,12 @@ namespace exactvis::test2d {
 using CgalK = CGAL::Exact_predicates_exact_constructions_kernel;
 using CgalTraits = CGAL::Arr_segment_traits_2<CgalK>;
 using CgalArr = CGAL::Arrangement_2<CgalTraits>;
+
+// The kernel's exact number type (a GMP rational), built from our exact coordinates without rounding.
+using CgalExact = std::decay_t<decltype(CGAL::exact(std::declval<CgalK::FT>()))>;
+inline CgalK::Point_2 to_cgal(const Point2& p) {
+  return CgalK::Point_2(CgalK::FT(CgalExact(p.x.mpq())), CgalK::FT(CgalExact(p.y.mpq())));
+}
 
 inline oracle2d::Pt to_pt(const CgalK::Point_2& p) {
   return {mpq_class(CGAL::exact(p.x())), mpq_class(CGAL::exact(p.y()))};
@@ -60,13 +68,11 @@ inline std::string show(const std::vector<oracle2d::Pt>& p) {
   return s;
 }
 
-// The arrangement of all ring edges of a scene (scene coordinates are doubles here).
+// The arrangement of all ring edges of a scene (exact coordinates).
 inline void insert_scene_edges(const Scene2D& scene, CgalArr& arr) {
   std::vector<CgalTraits::Segment_2> segs;
-  for (int v = 0; v < scene.num_vertices(); ++v) {
-    const Point2 &a = scene.points[v], &b = scene.points[scene.next[v]];
-    segs.emplace_back(CgalK::Point_2(a.ax, a.ay), CgalK::Point_2(b.ax, b.ay));
-  }
+  for (int v = 0; v < scene.num_vertices(); ++v)
+    segs.emplace_back(to_cgal(scene.points[v]), to_cgal(scene.points[scene.next[v]]));
   CGAL::insert(arr, segs.begin(), segs.end());
 }
 

@@ -31,7 +31,7 @@ bool make_fixture(std::uint64_t seed, int cells, Fixture& fx) {
   fx.framed = with_frame(*s, 0.1);
   fx.polys = polys;
   fx.polys.push_back(frame_polygon(fx.framed));
-  insert_scene_edges(fx.framed, fx.arr);  // inputs are doubles here
+  insert_scene_edges(fx.framed, fx.arr);
   return true;
 }
 
