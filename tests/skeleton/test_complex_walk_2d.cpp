@@ -376,6 +376,29 @@ std::vector<oracle2d::Polygon> jittered_convex_grid(std::uint64_t seed, int m) {
   return polys;
 }
 
+// Radial (star-shaped, hence simple) polygons with double coordinates on an m x m grid of cells of side
+// 10: k = 6 to 17 vertices at sorted random angles and random radii in [0.5, 4.5] around the cell centre,
+// so many reflex vertices, in general position.
+std::vector<oracle2d::Polygon> random_star_grid(std::uint64_t seed, int m) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0, 1);
+  std::vector<oracle2d::Polygon> polys;
+  for (int i = 0; i < m * m; ++i) {
+    const int k = 6 + static_cast<int>(u(rng) * 12);
+    std::vector<double> ang;
+    for (int t = 0; t < k; ++t) ang.push_back(6.283185307179586 * u(rng));
+    std::sort(ang.begin(), ang.end());
+    ang.erase(std::unique(ang.begin(), ang.end()), ang.end());
+    oracle2d::Ring r;
+    for (double a : ang) {
+      const double rad = 0.5 + 4.0 * u(rng);
+      r.push_back({10.0 * (i % m) + 5 + rad * std::cos(a), 10.0 * (i / m) + 5 + rad * std::sin(a)});
+    }
+    polys.push_back({{r}});
+  }
+  return polys;
+}
+
 }  // namespace
 
 TEST(ComplexWalk2D, HandMadeDegenerateScenesMatchSweepAndCgal) {
@@ -470,6 +493,22 @@ TEST(ComplexWalk2D, TriangleScenesOnASmallGridMatchSweep) {
   EXPECT_GE(tally.checked, 4000);
   EXPECT_GE(tally.cgal_checked, 150);
   EXPECT_GE(tally.brute_checked, 200);
+}
+
+TEST(ComplexWalk2D, StarPolygonsInGeneralPositionMatchSweepAndCgal) {
+  // many reflex vertices, double coordinates without exact degeneracies
+  Tally tally;
+  int scenes = 0;
+  for (std::uint64_t seed = 1; seed <= 12; ++seed) {
+    const auto w = walk_scene("random_star_grid(seed " + std::to_string(seed) + ", 3)", random_star_grid(seed, 3), 0.1);
+    if (!w) continue;
+    ++scenes;
+    check_scene(*w, query_points(*w, seed, 10), tally, 4);
+  }
+  EXPECT_GE(scenes, 10);
+  EXPECT_EQ(tally.failed, 0) << "of " << tally.checked << " queries";
+  EXPECT_GE(tally.checked, 900);
+  EXPECT_GE(tally.cgal_checked, 200);
 }
 
 TEST(ComplexWalk2D, ScenesWithRationalCoordinatesMatchSweep) {
