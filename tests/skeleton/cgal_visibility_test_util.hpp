@@ -64,7 +64,7 @@ inline std::vector<oracle2d::Pt> face_polygon(CgalArr::Face_handle f) {
 // Exact coordinates, for failure messages.
 inline std::string show(const std::vector<oracle2d::Pt>& p) {
   std::string s;
-  for (const auto& q : p) s += "(" + q.x.get_str() + "," + q.y.get_str() + ") ";
+  for (const auto& q : p) s.append("(").append(q.x.get_str()).append(",").append(q.y.get_str()).append(") ");
   return s;
 }
 

@@ -60,7 +60,8 @@ std::unique_ptr<WalkScene> walk_scene(const std::string& name, const std::vector
 
 std::string str(const Point2& p) {
   const Pt q = to_pt(p);
-  return "(" + q.x.get_str() + "," + q.y.get_str() + ")";
+  std::string s = "(";
+  return s.append(q.x.get_str()).append(",").append(q.y.get_str()).append(")");
 }
 
 std::string str(const VisibilityPolygon2D& poly) {
