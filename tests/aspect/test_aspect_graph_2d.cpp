@@ -87,6 +87,8 @@ void check_scene(const std::vector<oracle2d::Polygon>& polys, std::mt19937_64& r
   EXPECT_GE(located, random_points / 3);
 }
 
+oracle2d::Ring box(double x0, double y0, double x1, double y1) { return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}; }
+
 }  // namespace
 
 TEST(AspectGraph2D, TwoSquaresSampledViewpoints) {

@@ -53,7 +53,7 @@ inline oracle2d::Polygon frame_polygon(const Scene2D& framed) {
 }
 
 // Axis-parallel box ring.
-inline oracle2d::Ring box(double x0, double y0, double x1, double y1) { return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}; }
+inline oracle2d::Ring box_ring(double x0, double y0, double x1, double y1) { return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}; }
 
 // Axis-parallel rectangles on a small integer grid, some with flat vertices at edge midpoints (parallel
 // and collinear edges everywhere), some with a rectangular hole holding an island.
@@ -72,8 +72,8 @@ inline std::vector<oracle2d::Polygon> random_box_scene(std::uint64_t seed, int c
     used.push_back(r);
     const int type = uni(0, 3);
     if (type == 0 && w >= 6 && h >= 6) {  // ring with a hole and an island
-      out.push_back({{box(r[0], r[1], r[2], r[3]), box(r[0] + 1, r[1] + 1, r[2] - 1, r[3] - 1)}});
-      out.push_back({{box(r[0] + 2, r[1] + 2, r[0] + 3, r[1] + 3)}});
+      out.push_back({{box_ring(r[0], r[1], r[2], r[3]), box_ring(r[0] + 1, r[1] + 1, r[2] - 1, r[3] - 1)}});
+      out.push_back({{box_ring(r[0] + 2, r[1] + 2, r[0] + 3, r[1] + 3)}});
     } else if (type == 1) {  // flat vertices at the midpoints
       const double mx = (r[0] + r[2]) / 2.0, my = (r[1] + r[3]) / 2.0;
       out.push_back({{{{double(r[0]), double(r[1])}, {mx, double(r[1])}, {double(r[2]), double(r[1])},
@@ -84,7 +84,7 @@ inline std::vector<oracle2d::Polygon> random_box_scene(std::uint64_t seed, int c
                        {r[0] + w / 2.0, r[1] + h / 2.0}, {r[0] + w / 2.0, double(r[3])},
                        {double(r[0]), double(r[3])}}}});
     } else {
-      out.push_back({{box(r[0], r[1], r[2], r[3])}});
+      out.push_back({{box_ring(r[0], r[1], r[2], r[3])}});
     }
   }
   return out;

@@ -320,7 +320,7 @@ struct HandScene {
 std::vector<HandScene> hand_scenes() {
   using R = oracle2d::Ring;
   return {
-      {"one box", {{{box(0, 0, 1, 1)}}}, {Point2(1.5, 0.0), Point2(-0.5, 1.0), Point2(0.5, 1.5), Point2(1.5, 1.5)}},
+      {"one box", {{{box_ring(0, 0, 1, 1)}}}, {Point2(1.5, 0.0), Point2(-0.5, 1.0), Point2(0.5, 1.5), Point2(1.5, 1.5)}},
       {"one convex hexagon",
        {{{R{{0, 0}, {2, -1}, {4, 0}, {4, 2}, {2, 3}, {0, 2}}}}},
        {Point2(6.0, 3.0), Point2(-2.0, -2.0), Point2(2.0, -3.0), Point2(5.0, 1.0), Point2(6.0, 4.0)}},
@@ -333,22 +333,22 @@ std::vector<HandScene> hand_scenes() {
        {{{R{{0, 0}, {3, 0}, {3, 3}, {2, 3}, {2, 1}, {1, 1}, {1, 3}, {0, 3}}}}},
        {Point2(1.5, 2.0), Point2(1.5, 3.0), Point2(1.5, 4.0), Point2(-1.0, 3.0), Point2(4.0, 1.0), Point2(1.5, 1.5)}},
       {"three boxes with collinear edges",
-       {{{box(0, 0, 1, 1)}}, {{box(2, 0, 3, 1)}}, {{box(4, 0, 5, 1)}}},
+       {{{box_ring(0, 0, 1, 1)}}, {{box_ring(2, 0, 3, 1)}}, {{box_ring(4, 0, 5, 1)}}},
        {Point2(-1.0, 0.0), Point2(6.0, 0.0), Point2(1.5, 0.0), Point2(1.5, 1.0), Point2(-1.0, 1.0), Point2(3.5, 0.5),
         Point2(-2.0, -1.0), Point2(2.5, 2.0)}},
       {"three bitangents through the origin",
-       {{{box(2, 1, 3, 2)}}, {{box(-3, -2, -2, -1)}}, {{box(-2, 2, -1, 3)}}, {{box(1, -3, 2, -2)}},
-        {{box(0.5, 2, 1, 3)}}, {{box(-1, -3, -0.5, -2)}}},
+       {{{box_ring(2, 1, 3, 2)}}, {{box_ring(-3, -2, -2, -1)}}, {{box_ring(-2, 2, -1, 3)}}, {{box_ring(1, -3, 2, -2)}},
+        {{box_ring(0.5, 2, 1, 3)}}, {{box_ring(-1, -3, -0.5, -2)}}},
        {Point2(0.0, 0.0), Point2(0.5, 0.25), Point2(-0.5, 0.5), Point2(0.25, 0.5), Point2(0.0, 1.0), Point2(1.0, 0.0)}},
       {"box with a hole and two islands",
-       {{{box(0, 0, 10, 10), box(2, 2, 8, 8)}}, {{box(4, 4, 5, 5)}}, {{box(6, 4, 7, 5)}}},
+       {{{box_ring(0, 0, 10, 10), box_ring(2, 2, 8, 8)}}, {{box_ring(4, 4, 5, 5)}}, {{box_ring(6, 4, 7, 5)}}},
        {Point2(3.0, 3.0), Point2(5.5, 4.5), Point2(3.0, 4.0), Point2(3.0, 5.0), Point2(7.5, 4.5), Point2(4.5, 3.0),
         Point2(2.5, 7.5), Point2(-1.0, 5.0), Point2(5.5, 2.5), Point2(11.0, 11.0), Point2(5.5, 6.5)}},
       {"ring with an empty hole",
-       {{{box(0, 0, 6, 6), box(2, 2, 4, 4)}}},
+       {{{box_ring(0, 0, 6, 6), box_ring(2, 2, 4, 4)}}},
        {Point2(3.0, 3.0), Point2(2.5, 2.5), Point2(3.5, 2.25), Point2(-1.0, 2.0), Point2(7.0, 7.0)}},
       {"octagon with flat vertices next to a box",
-       {{{R{{0, 0}, {1, 0}, {2, 0}, {2, 1}, {2, 2}, {1, 2}, {0, 2}, {0, 1}}}}, {{box(3, 0, 4, 2)}}},
+       {{{R{{0, 0}, {1, 0}, {2, 0}, {2, 1}, {2, 2}, {1, 2}, {0, 2}, {0, 1}}}}, {{box_ring(3, 0, 4, 2)}}},
        {Point2(-1.0, 1.0), Point2(2.5, 1.0), Point2(1.0, 3.0), Point2(5.0, 1.0), Point2(2.5, 0.0), Point2(2.5, 2.0),
         Point2(-1.0, 0.0), Point2(1.0, -1.0)}},
       {"diagonal chain of triangles",
@@ -564,7 +564,7 @@ TEST(ComplexWalk2D, OneIndexServesFramesOfAnyMargin) {
 }
 
 TEST(ComplexWalk2D, RejectsBadInput) {
-  const std::vector<oracle2d::Polygon> polys{{{box(0, 0, 10, 10), box(2, 2, 8, 8)}}, {{box(4, 4, 5, 5)}}};
+  const std::vector<oracle2d::Polygon> polys{{{box_ring(0, 0, 10, 10), box_ring(2, 2, 8, 8)}}, {{box_ring(4, 4, 5, 5)}}};
   const auto w = walk_scene("box with a hole and an island", polys, 0.5);
   ASSERT_TRUE(w);
   auto walk = [&](const Point2& q) { return visibility_polygon_in_complex(w->index, w->framed, q); };

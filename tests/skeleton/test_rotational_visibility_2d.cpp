@@ -114,6 +114,8 @@ void expect_same(const std::vector<oracle2d::Polygon>& polys, const Scene2D& s, 
   EXPECT_EQ(got, expected);
 }
 
+oracle2d::Ring box(double x0, double y0, double x1, double y1) { return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}; }
+
 }  // namespace
 
 TEST(RotationalVisibility2D, HandPickedDegenerateScenes) {

@@ -7,6 +7,7 @@ using namespace exactvis;
 using namespace exactvis::test2d;
 
 namespace {
+oracle2d::Ring box(double x0, double y0, double x1, double y1) { return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}; }
 
 std::string error_of(const std::vector<oracle2d::Polygon>& polys) {
   try {

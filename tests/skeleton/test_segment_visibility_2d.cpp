@@ -10,6 +10,10 @@
 using namespace exactvis;
 using namespace exactvis::test2d;
 
+namespace {
+oracle2d::Ring box(double x0, double y0, double x1, double y1) { return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}; }
+}  // namespace
+
 TEST(SegmentVisibility2D, WallBlocksAndGapLetsThrough) {
   // a wall x in [4,5], y in [-10, 10]; S left of it, T right of it
   const std::vector<oracle2d::Polygon> wall{{{box(4, -10, 5, 10)}}};

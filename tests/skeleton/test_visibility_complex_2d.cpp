@@ -12,6 +12,7 @@ using namespace exactvis;
 using namespace exactvis::test2d;
 
 namespace {
+oracle2d::Ring box(double x0, double y0, double x1, double y1) { return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}; }
 
 std::set<std::array<int, 2>> face_pairs(const VisibilityComplex2D& cx) {
   std::set<std::array<int, 2>> s;

@@ -61,6 +61,8 @@ void expect_same_bitangents(const std::vector<oracle2d::Polygon>& polys, const S
   for (const auto& e : got) EXPECT_TRUE(expected.count(e)) << "extra bitangent " << e;
 }
 
+oracle2d::Ring box(double x0, double y0, double x1, double y1) { return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}; }
+
 }  // namespace
 
 TEST(Bitangents2D, TwoSquaresHaveFourBitangentsOfAllKinds) {
