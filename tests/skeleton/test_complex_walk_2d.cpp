@@ -563,6 +563,30 @@ TEST(ComplexWalk2D, OneIndexServesFramesOfAnyMargin) {
   EXPECT_GE(tally.checked, 400);
 }
 
+TEST(ComplexWalk2D, ManyPointsOnAllCoresEqualSingleWalks) {
+  // visibility_polygons_in_complex (parallel over the points) against the angular sweep per point, on
+  // degenerate scenes with adversarial points; a repeated point; an empty list; a bad point among good ones
+  int checked = 0;
+  for (std::uint64_t seed = 1; seed <= 12; ++seed) {
+    const auto w = seed % 2 ? walk_scene("random_box_scene(seed " + std::to_string(seed) + ", 6)", random_box_scene(seed, 6))
+                            : walk_scene("random_triangle_scene(seed " + std::to_string(seed) + ", 6)", random_triangle_scene(seed, 6));
+    ASSERT_TRUE(w);
+    std::vector<Point2> points;
+    for (const Query& q : query_points(*w, seed, 8)) points.push_back(q.q);
+    points.push_back(points.front());
+    const auto batch = visibility_polygons_in_complex(w->index, w->framed, points);
+    ASSERT_EQ(batch.size(), points.size());
+    for (std::size_t i = 0; i < points.size(); ++i, ++checked)
+      ASSERT_TRUE(batch[i].vertices == visibility_polygon(w->framed, points[i]).vertices)
+          << w->name << " q " << str(points[i]);
+    EXPECT_TRUE(visibility_polygons_in_complex(w->index, w->framed, {}).empty());
+    const Point2 bad = w->scene.points[0];  // a vertex: on a boundary
+    points.insert(points.begin() + points.size() / 2, bad);
+    EXPECT_THROW(visibility_polygons_in_complex(w->index, w->framed, points), std::invalid_argument) << w->name;
+  }
+  EXPECT_GE(checked, 600);
+}
+
 TEST(ComplexWalk2D, RejectsBadInput) {
   const std::vector<oracle2d::Polygon> polys{{{box_ring(0, 0, 10, 10), box_ring(2, 2, 8, 8)}}, {{box_ring(4, 4, 5, 5)}}};
   const auto w = walk_scene("box with a hole and an island", polys, 0.5);
