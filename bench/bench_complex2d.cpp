@@ -152,11 +152,12 @@ int main(int argc, char** argv) {
   std::printf("\n# 3. visibility polygon queries per second (grid layout, %d random free points)\n", queries);
   std::printf("#    single = one angular sweep per point; batch = visibility_polygons (one rotational sweep for\n"
               "#    all points) on the same points, and on 10x as many points; walk = visibility_polygon_in_complex\n"
-              "#    (walk in the stored complex; its one-time cost is in the last columns: complex s = visibility_complex,\n"
+              "#    (walk in the stored complex, one point at a time; walk10x = visibility_polygons_in_complex on the 10x\n"
+              "#    points, all cores; the one-time cost is in the last columns: complex s = visibility_complex,\n"
               "#    index s = complex_walk_index; events/q, cand/q = mean hit-edge changes and candidate pivots tested)\n");
-  std::printf("%8s %12s %12s %14s %12s %16s %12s %12s %14s %8s %10s %10s %9s %9s\n", "n", "single q/s", "batch q/s",
-              "batch10x q/s", "walk q/s", "CGAL TEV q/s", "us/q single", "us/q walk", "us/q CGAL TEV", "ratio",
-              "complex s", "index s", "events/q", "cand/q");
+  std::printf("%8s %12s %12s %14s %12s %14s %16s %12s %12s %14s %8s %10s %10s %9s %9s\n", "n", "single q/s",
+              "batch q/s", "batch10x q/s", "walk q/s", "walk10x q/s", "CGAL TEV q/s", "us/q single", "us/q walk",
+              "us/q CGAL TEV", "ratio", "complex s", "index s", "events/q", "cand/q");
   for (int n : {1024, 2048, 4096, 8192}) {
     if (n > 2 * max_n) break;
     const Scene2D scene = make_scene("grid", n / 8, 8, n);
@@ -194,6 +195,9 @@ int main(int argc, char** argv) {
       total.events += st.events, total.faces += st.faces, total.candidates += st.candidates;
     }
     const double walk = qs.size() / (now() - tc2);
+    const double tw0 = now();
+    sink += visibility_polygons_in_complex(index, framed, qs10).size();
+    const double walk10 = qs10.size() / (now() - tw0);
     for (std::size_t i = 0; i < std::min<std::size_t>(qs.size(), 20); ++i)  // not timed: same output as the sweep
       if (visibility_polygon_in_complex(index, framed, qs[i]).vertices != visibility_polygon(framed, qs[i]).vertices)
         std::printf("MISMATCH walk/sweep at query %zu\n", i);
@@ -203,8 +207,8 @@ int main(int argc, char** argv) {
     // (CGAL TEV with Exact_predicates_inexact_constructions_kernel throws Bad_object_cast on these scenes,
     //  so the comparison uses the exact-constructions kernel, like our exact output.)
     (void)b1;
-    std::printf("%8d %12.1f %12.1f %14.1f %12.1f %16.1f %12.1f %12.1f %14.1f %8.2f %10.3f %10.3f %9.1f %9.1f\n",
-                framed.num_vertices(), ours, batch, batch10, walk, epeck, 1e6 / ours, 1e6 / walk, 1e6 / epeck,
+    std::printf("%8d %12.1f %12.1f %14.1f %12.1f %14.1f %16.1f %12.1f %12.1f %14.1f %8.2f %10.3f %10.3f %9.1f %9.1f\n",
+                framed.num_vertices(), ours, batch, batch10, walk, walk10, epeck, 1e6 / ours, 1e6 / walk, 1e6 / epeck,
                 epeck / ours, tc1 - tc0, tc2 - tc1, double(total.events) / qs.size(),
                 double(total.candidates) / qs.size());
     std::fflush(stdout);
