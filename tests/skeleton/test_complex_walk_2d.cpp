@@ -5,7 +5,7 @@
 // region, exactly, on a subset) and the all-rational brute force of tests/oracles (the visible edges, on a
 // subset). Fixed seeds; random convex, non-convex (star) and holed scenes;
 // integer-grid scenes with collinear vertices across objects, parallel edges, flat vertices, concurrent
-// bitangents; the same under rational rotations and scalings; query points chosen to be degenerate (on
+// bitangents; the same under rational rotations, scalings and translations; query points chosen to be degenerate (on
 // bitangent lines, on lines through two vertices, along an edge or through a frame corner, at direction
 // (1,0) / (-1,0) / (0,1) / (0,-1) from a vertex, at crossings of such lines, rational points on grid lines).
 // Also: bad input is rejected, and the walk's counters show it tests only the candidates of the faces it
@@ -514,21 +514,25 @@ TEST(ComplexWalk2D, StarPolygonsInGeneralPositionMatchSweepAndCgal) {
 
 TEST(ComplexWalk2D, ScenesWithRationalCoordinatesMatchSweep) {
   // box and triangle scenes under exact rational maps that keep every collinearity: a rotation with
-  // cos = 3/5, sin = 4/5 (axis-parallel edges become slanted, other vertex lines become horizontal) and a
-  // scaling by 1/3 (coordinates no longer doubles)
+  // cos = 3/5, sin = 4/5 (axis-parallel edges become slanted, other vertex lines become horizontal), a
+  // scaling by 1/3 (coordinates no longer doubles), a shrinking by 1/1000003 moved to (10^6, -10^6) (the
+  // scene in a tiny corner of its frame) and a blow-up by 10^9 moved by (1/7, -2/7)
+  static const char* const maps[] = {"rotated by (3/5, 4/5)", "scaled by 1/3", "shrunk by 1/1000003 at (1e6, -1e6)",
+                                     "blown up by 1e9 and moved by (1/7, -2/7)"};
   Tally tally;
   for (std::uint64_t seed = 1; seed <= 24; ++seed) {
     const auto polys = seed % 2 ? random_box_scene(seed, 3 + seed % 5) : random_triangle_scene(seed, 3 + seed % 5);
     auto input = to_input(polys);
-    const bool rotate = seed % 4 < 2;
+    const int map = (seed / 2) % 4;
     for (auto& poly : input)
       for (auto& ring : poly.rings)
         for (Point2& p : ring)
-          p = rotate ? Point2((Exact(3) * p.x - Exact(4) * p.y) / 5, (Exact(4) * p.x + Exact(3) * p.y) / 5)
-                     : Point2(p.x / 3, p.y / 3);
+          p = map == 0   ? Point2((Exact(3) * p.x - Exact(4) * p.y) / 5, (Exact(4) * p.x + Exact(3) * p.y) / 5)
+              : map == 1 ? Point2(p.x / 3, p.y / 3)
+              : map == 2 ? Point2(p.x / 1000003 + Exact(1000000), p.y / 1000003 - Exact(1000000))
+                         : Point2(p.x * Exact(1e9) + Exact(1) / 7, p.y * Exact(1e9) - Exact(2) / 7);
     const WalkScene w(std::string(seed % 2 ? "random_box_scene" : "random_triangle_scene") + "(seed " +
-                          std::to_string(seed) + ", " + std::to_string(3 + seed % 5) + ")" +
-                          (rotate ? " rotated by (3/5, 4/5)" : " scaled by 1/3"),
+                          std::to_string(seed) + ", " + std::to_string(3 + seed % 5) + ") " + maps[map],
                       make_scene2d(input), 0.2);
     check_scene(w, query_points(w, seed, 12), tally, seed % 3 == 0 ? 3 : 0);
   }
