@@ -28,7 +28,11 @@ struct Dir {
 // The line direction of p - q taken in [0, pi).
 Dir line_dir(const Point2& q, const Point2& p) { return half_of(q, p) == 0 ? Dir{&q, &p} : Dir{&p, &q}; }
 
-int compare_dir(const Dir& u, const Dir& v) { return compare_angle(*u.from, *u.to, *v.from, *v.to); }
+// Order of two line directions taken in [0, pi) (as line_dir gives them): one cross product decides.
+int compare_dir(const Dir& u, const Dir& v) {
+  const Sign c = cross_sign(*u.from, *u.to, *v.from, *v.to);
+  return c == Sign::Positive ? -1 : (c == Sign::Negative ? 1 : 0);
+}
 
 }  // namespace
 
@@ -128,10 +132,10 @@ struct Walk {
     return orientation2(q, P()[e], P()[s.next[e]]) == Sign::Positive ? s.next[e] : e;
   }
 
-  // w strictly between q and the hit point of the ray on edge e (the line of e separates them).
-  bool before_edge(int w, int e) const {
-    const Sign sw = orientation2(P()[e], P()[s.next[e]], P()[w]);
-    return sw != Sign::Zero && sw == orientation2(P()[e], P()[s.next[e]], q);
+  // w strictly between q and the hit point of the ray on edge e (the line of e separates them); q_side is
+  // orientation2(e, next e, q), computed once per step.
+  bool before_edge(int w, int e, Sign q_side) const {
+    return orientation2(P()[e], P()[s.next[e]], P()[w]) == q_side;
   }
 
   // Hit point of the line through q in direction R with edge e (an endpoint if it lies on the line).
@@ -364,14 +368,16 @@ VisibilityPolygon2D visibility_polygon_in_complex(const ComplexWalkIndex2D& ix, 
       }
       if (c <= 0) slide[side] = x;
     }
+    const Sign q_side[2] = {orientation2(P[edge[0]], P[s.next[edge[0]]], q),
+                            orientation2(P[edge[1]], P[s.next[edge[1]]], q)};
     for (int w : cands) {
       ++st.candidates;
-      const Dir d = line_dir(q, P[w]);
-      if (!later(d)) continue;
+      const int side = half_of(q, P[w]);
+      const Dir d = side == 0 ? Dir{&q, &P[w]} : Dir{&P[w], &q};
       const int c = have ? compare_dir(d, best) : -1;
       if (c > 0) continue;
-      const int side = half_of(q, P[w]);
-      if (!W.before_edge(w, edge[side])) continue;
+      if (!later(d)) continue;
+      if (!W.before_edge(w, edge[side], q_side[side])) continue;
       if (c < 0) {
         best = d, have = true;
         slide[0] = slide[1] = -1;
