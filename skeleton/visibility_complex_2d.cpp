@@ -75,6 +75,30 @@ struct UnionFind {
   void unite(int a, int b) { p[find(a)] = find(b); }
 };
 
+// Object met by the segments near a bitangent's line beyond its endpoint a when the line continues along an
+// edge of a (an empty extension), on the side where they miss a's object near a: they run along the
+// collinear edges from a; at the last collinear vertex c they enter a's object if the ring turns towards
+// them there, else they go on to the first contact beyond c (-1: infinity). d1 - d0 points away from b.
+int object_beyond_empty_extension(const Scene2D& s, int a, const Point2& d0, const Point2& d1) {
+  const auto& P = s.points;
+  auto ahead = [&](int c, int m) {  // m - c has exactly the direction d
+    return cross_sign(d0, d1, P[c], P[m]) == Sign::Zero && dot_sign(d0, d1, P[c], P[m]) == Sign::Positive;
+  };
+  // the object lies on the left of each ring edge vertex -> next
+  const Sign object_side = ahead(a, s.next[a]) ? Sign::Positive : Sign::Negative;
+  int c = a, from = -1;
+  for (int guard = 0; guard < s.num_vertices(); ++guard) {
+    const int n = s.next[c] != from && ahead(c, s.next[c]) ? s.next[c] : (s.prev[c] != from && ahead(c, s.prev[c]) ? s.prev[c] : -1);
+    if (n < 0) break;
+    from = c;
+    c = n;
+  }
+  const int m = s.next[c] == from ? s.prev[c] : s.next[c];
+  if (cross_sign(d0, d1, P[c], P[m]) != object_side) return s.object_of(a);
+  const Point2 t(P[c].x + (d1.x - d0.x), P[c].y + (d1.y - d0.y));
+  return first_contact(s, c, P[c], t).object;
+}
+
 Point2 add_dirs(const Point2& o, const Point2& a0, const Point2& a1, const Point2& b0, const Point2& b1) {
   return Point2(o.x + (a1.x - a0.x) + (b1.x - b0.x), o.y + (a1.y - a0.y) + (b1.y - b0.y));
 }
@@ -284,14 +308,14 @@ VisibilityComplex2D visibility_complex(const Scene2D& s, void (*progress)(double
     const std::array<std::array<int, 2>, 6> pairs{sorted(A, Oa), sorted(A, Ob), sorted(A, Bo),
                                                   sorted(Oa, Ob), sorted(Oa, Bo), sorted(Ob, Bo)};
     // an empty extension (the line continues along an edge of the endpoint) does not name the object
-    // beyond: leave the slots involving that end to their edges
+    // beyond: it is the object met by the nearby segments that miss the endpoint's object
     const bool empty_a = B[i].end_a.kind == SegmentEnd2D::Vertex && B[i].end_a.id == B[i].a;
     const bool empty_b = B[i].end_b.kind == SegmentEnd2D::Vertex && B[i].end_b.id == B[i].b;
-    for (int k = 0; k < 6; ++k) {
-      const bool uses_a = k <= 2, uses_b = k == 2 || k == 4 || k == 5;
-      if ((uses_a && empty_a) || (uses_b && empty_b)) continue;
-      pair_of[vslot[i][k]] = pairs[k];
-    }
+    const int A2 = empty_a ? object_beyond_empty_extension(s, B[i].a, P[B[i].b], P[B[i].a]) : A;
+    const int B2 = empty_b ? object_beyond_empty_extension(s, B[i].b, P[B[i].a], P[B[i].b]) : Bo;
+    const std::array<std::array<int, 2>, 6> pairs2{sorted(A2, Oa), sorted(A2, Ob), sorted(A2, B2),
+                                                   sorted(Oa, Ob), sorted(Oa, B2), sorted(Ob, B2)};
+    for (int k = 0; k < 6; ++k) pair_of[vslot[i][k]] = empty_a || empty_b ? pairs2[k] : pairs[k];
   }
   for (std::size_t j = 0; j < cx.edges.size(); ++j) {
     const ComplexEdge2D& e = cx.edges[j];

@@ -12,8 +12,10 @@
 //   pair, which is checked against the end objects found by independent ray shots. Incidences: a bitangent with line objects A, Oa, Ob, B in order (A beyond a, B beyond b) touches exactly
 //   4 edges (2 on the chain of a, 2 on the chain of b) and the 6 faces of pairs {A,Oa}, {A,Ob}, {A,B},
 //   {Oa,Ob}, {Oa,B}, {Ob,B}, each through exactly 2 of its edges; an edge touches 3 faces (end-pivot,
-//   pivot-end, end-end). When a bitangent's line continues along an edge of its endpoint (empty extension),
-//   the slots involving that end take their pair from the edges glued to them.
+//   pivot-end, end-end). When a bitangent's line continues along an edge of its endpoint a (empty
+//   extension), A is the object met by the nearby segments that miss a's object: they run along the
+//   collinear edges and re-enter a's object where the ring turns towards them, else go on to the first
+//   contact beyond the last collinear vertex.
 #include "skeleton/visibility_graph_2d.hpp"
 
 #include <array>
