@@ -78,6 +78,28 @@ TEST(Cli2D, Visibility2dAndAspect2d) {
   EXPECT_FALSE(nlohmann::json::parse(b.out)["visible"].get<bool>());
 }
 
+TEST(Cli2D, Visibility2dMethodsGiveTheSameJson) {
+  ASSERT_TRUE(std::filesystem::exists(EXACTVIS_BINARY));
+  // a non-convex object with a hole, a triangle, and viewpoints on lines through several vertices
+  const std::string scene = write("m.json", R"({"polygons": [[[[0,0],[6,0],[6,6],[0,6]], [[2,2],[2,4],[4,4],[4,2]]],
+      [[8,0],[12,0],[12,4],[10,2],[8,4]], [[1,8],[3,8],[2,10]]]})");
+  for (const char* from : {"2.5,3.5", "7,2", "10,3", "2,7", "13,5", "-1,-1", "3,3", "6,8"}) {
+    const CliRun a = run("visibility2d " + scene + " --from " + from);
+    const CliRun b = run("visibility2d " + scene + " --from " + from + " --method sweep");
+    ASSERT_EQ(a.status, 0) << from << ": " << a.err;
+    ASSERT_EQ(b.status, 0) << from << ": " << b.err;
+    EXPECT_EQ(a.out, b.out) << from;
+    EXPECT_GE(nlohmann::json::parse(a.out)["polygon"].size(), 4u) << from;
+  }
+  for (const char* seg : {"--from-segment 7,1,7,3 --to-segment 13,1,13,3", "--from-segment 2.5,2.5,2.5,3 --to-segment 3.5,3.5,3,3.5",
+                          "--from-segment -1,1,-1,5 --to-segment 13,5,14,6"}) {
+    const CliRun a = run("visibility2d " + scene + " " + seg);
+    const CliRun b = run("visibility2d " + scene + " " + seg + " --method sweep");
+    ASSERT_EQ(a.status, 0) << seg << ": " << a.err;
+    EXPECT_EQ(nlohmann::json::parse(a.out)["visible"], nlohmann::json::parse(b.out)["visible"]) << seg;
+  }
+}
+
 TEST(Cli2D, BadInputGivesOneLineErrorAndNonZeroExit) {
   ASSERT_TRUE(std::filesystem::exists(EXACTVIS_BINARY));
   const std::vector<std::string> bad = {
@@ -89,6 +111,8 @@ TEST(Cli2D, BadInputGivesOneLineErrorAndNonZeroExit) {
       "visibility2d " + write("v.json", kTwoSquares) + " --from 0.5,0.5",
       "visibility2d " + write("v2.json", kTwoSquares) + " --from 1,0.5",
       "visibility2d " + write("v3.json", kTwoSquares) + " --from x",
+      "visibility2d " + write("v4.json", kTwoSquares) + " --from 2,0.25 --method fast",
+      "visibility2d " + write("v5.json", kTwoSquares) + " --from 0.5,0.5 --method sweep",
       "aspect2d " + write("a.json", kTwoSquares) + " --margin -1",
       "complex2d " + write("s.json", kTwoSquares) + " --slice z=1",
   };
