@@ -233,47 +233,6 @@ struct Walk {
     throw std::logic_error("complex walk: no complex edge holds a tangent line (bug)");
   }
 
-  // First contact of the ray from vertex y in direction R with the given edges (y's own edges skipped): a
-  // vertex on the ray or an edge crossed in its interior, compared by orientation tests only (the scene's
-  // edges are disjoint, so of two edges crossing the ray one lies on y's side of the other's line).
-  SegmentEnd2D nearest_contact(int y, const Dir& R, const std::vector<int>& edges) const {
-    const Point2& o = P()[y];
-    SegmentEnd2D best;
-    auto side_of_y = [&](int e, const Point2& p) {  // p strictly on y's side of edge e's line
-      const Sign sp = orientation2(P()[e], P()[s.next[e]], p);
-      return sp != Sign::Zero && sp == orientation2(P()[e], P()[s.next[e]], o);
-    };
-    auto nearer = [&](const SegmentEnd2D& c) {  // c before best along the ray
-      if (best.kind == SegmentEnd2D::Infinity) return true;
-      if (c.kind == SegmentEnd2D::Vertex && best.kind == SegmentEnd2D::Vertex)
-        return dot_sign(P()[c.id], P()[best.id], *R.from, *R.to) == Sign::Positive;
-      if (c.kind == SegmentEnd2D::Vertex) return side_of_y(best.id, P()[c.id]);
-      if (best.kind == SegmentEnd2D::Vertex) return !side_of_y(c.id, P()[best.id]);
-      return edge_closer(s, o, c.id, best.id);
-    };
-    auto ahead = [&](int v) { return dot_sign(o, P()[v], *R.from, *R.to) == Sign::Positive; };
-    for (int e : edges) {
-      const int a = e, b = s.next[e];
-      if (a == y || b == y) continue;
-      const Sign oa = cross_sign(*R.from, *R.to, o, P()[a]), ob = cross_sign(*R.from, *R.to, o, P()[b]);
-      if (oa != Sign::Zero && oa == ob) continue;
-      SegmentEnd2D c;
-      if (oa == Sign::Zero || ob == Sign::Zero) {
-        for (int v : {a, b}) {
-          if ((v == a ? oa : ob) != Sign::Zero || !ahead(v)) continue;
-          c.kind = SegmentEnd2D::Vertex, c.id = v;
-          if (nearer(c)) best = c;
-        }
-        continue;
-      }
-      // proper crossing of the line: ahead iff y lies on the side of e's line opposite to the direction
-      if (cross_sign(o, P()[a], P()[a], P()[b]) != cross_sign(*R.from, *R.to, P()[a], P()[b])) continue;
-      c.kind = SegmentEnd2D::EdgeInterior, c.id = e;
-      if (nearer(c)) best = c;
-    }
-    return best;
-  }
-
   // The edge met by the ray from q in direction R, turned counterclockwise by an infinitesimal, given that
   // the ray at R reaches vertex y with nothing before it.
   int resolve(int y, const Dir& R) const {
@@ -300,7 +259,7 @@ struct Walk {
       }
       if (!have_end) {
         const int obj = object_beyond(y, R);
-        end = nearest_contact(y, R, obj < 0 ? frame_edges : ix.object_edges[obj]);
+        end = first_contact(s, y, *R.from, *R.to, obj < 0 ? &frame_edges : &ix.object_edges[obj]);
         if (end.kind == SegmentEnd2D::Infinity)
           throw std::logic_error("complex walk: the ray misses the object the complex names (bug)");
       }
@@ -310,7 +269,7 @@ struct Walk {
         continue;
       }
       if (end.kind == SegmentEnd2D::Infinity) {
-        end = nearest_contact(y, R, frame_edges);
+        end = first_contact(s, y, *R.from, *R.to, &frame_edges);
         if (end.kind == SegmentEnd2D::EdgeInterior) return end.id;
         if (end.kind == SegmentEnd2D::Vertex) {
           y = end.id;

@@ -1,5 +1,6 @@
 #include "skeleton/visibility_complex_2d.hpp"
 
+#include "skeleton/angular_sweep_2d.hpp"
 #include "skeleton/rotational_visibility_2d.hpp"
 
 #include <tbb/parallel_for.h>
@@ -14,48 +15,49 @@ namespace exactvis {
 
 SegmentEnd2D first_contact(const Scene2D& s, int v, const Point2& d0, const Point2& d1,
                            const std::vector<int>* edges) {
+  // Candidates are compared by orientation tests only (no parameters along the ray): of two edges crossing
+  // the ray, one lies on o's side of the other's line (scene edges are disjoint); a vertex on the ray comes
+  // before an edge's crossing iff it lies on o's side of the edge's line. Only the winner's point is built.
   const auto& P = s.points;
   const Point2& o = P[v];
-  const Point2 t1(o.x + (d1.x - d0.x), o.y + (d1.y - d0.y));  // o + d
   SegmentEnd2D best;
-  std::optional<Exact> best_t;
-  auto consider = [&](const Exact& t, SegmentEnd2D::Kind kind, int id) {
-    if (best_t && !(t < *best_t)) return;
-    best_t = t;
+  auto on_o_side = [&](int e, const Point2& p) {
+    const Sign sp = orientation2(P[e], P[s.next[e]], p);
+    return sp != Sign::Zero && sp == orientation2(P[e], P[s.next[e]], o);
+  };
+  auto nearer = [&](SegmentEnd2D::Kind kind, int id) {
+    if (best.kind == SegmentEnd2D::Infinity) return true;
+    if (kind == SegmentEnd2D::Vertex && best.kind == SegmentEnd2D::Vertex)
+      return dot_sign(P[id], P[best.id], d0, d1) == Sign::Positive;
+    if (kind == SegmentEnd2D::Vertex) return on_o_side(best.id, P[id]);
+    if (best.kind == SegmentEnd2D::Vertex) return !on_o_side(id, P[best.id]);
+    return edge_closer(s, o, id, best.id);
+  };
+  auto consider = [&](SegmentEnd2D::Kind kind, int id) {
+    if (!nearer(kind, id)) return;
     best.kind = kind;
     best.id = id;
-    best.object = s.object_of(id);
   };
-  const Exact dx = d1.x - d0.x, dy = d1.y - d0.y;
   const int count = edges ? static_cast<int>(edges->size()) : s.num_vertices();
   for (int i = 0; i < count; ++i) {
     const int e = edges ? (*edges)[i] : i;
     const int a = e, b = s.next[e];
     if (a == v || b == v) continue;
-    const Sign oa = orientation2(o, t1, P[a]), ob = orientation2(o, t1, P[b]);
+    const Sign oa = cross_sign(d0, d1, o, P[a]), ob = cross_sign(d0, d1, o, P[b]);
     if (oa != Sign::Zero && oa == ob) continue;
-    auto param = [&](const Point2& p) { return ((p.x - o.x) * dx + (p.y - o.y) * dy) / (dx * dx + dy * dy); };
-    if (oa == Sign::Zero && ob == Sign::Zero) {  // collinear edge: its nearer endpoint ahead
+    if (oa == Sign::Zero || ob == Sign::Zero) {  // an endpoint on the line (both: a collinear edge)
       for (int w : {a, b})
-        if (dot_sign(o, t1, o, P[w]) == Sign::Positive) consider(param(P[w]), SegmentEnd2D::Vertex, w);
+        if ((w == a ? oa : ob) == Sign::Zero && dot_sign(o, P[w], d0, d1) == Sign::Positive)
+          consider(SegmentEnd2D::Vertex, w);
       continue;
     }
-    if (oa == Sign::Zero) {
-      if (dot_sign(o, t1, o, P[a]) == Sign::Positive) consider(param(P[a]), SegmentEnd2D::Vertex, a);
-      continue;
-    }
-    if (ob == Sign::Zero) {
-      if (dot_sign(o, t1, o, P[b]) == Sign::Positive) consider(param(P[b]), SegmentEnd2D::Vertex, b);
-      continue;
-    }
-    // proper crossing of the line; ahead iff o and o+d... sign of t = cross(a-o, e) / cross(d, e)
-    const Sign num = cross_sign(o, P[a], P[a], P[b]), den = cross_sign(d0, d1, P[a], P[b]);
-    if (num == Sign::Zero || num != den) continue;
-    const Exact ex = P[b].x - P[a].x, ey = P[b].y - P[a].y;
-    const Exact t = ((P[a].x - o.x) * ey - (P[a].y - o.y) * ex) / (dx * ey - dy * ex);
-    consider(t, SegmentEnd2D::EdgeInterior, e);
+    // proper crossing of the line; ahead iff o lies on the side of e's line opposite to the direction
+    if (cross_sign(o, P[a], P[a], P[b]) != cross_sign(d0, d1, P[a], P[b])) continue;
+    consider(SegmentEnd2D::EdgeInterior, e);
   }
-  if (best_t) best.point = Point2(o.x + *best_t * dx, o.y + *best_t * dy);
+  if (best.kind == SegmentEnd2D::Vertex) best.point = P[best.id];
+  if (best.kind == SegmentEnd2D::EdgeInterior) best.point = line_intersection(o, d0, d1, P[best.id], P[s.next[best.id]]);
+  if (best.kind != SegmentEnd2D::Infinity) best.object = s.object_of(best.id);
   return best;
 }
 
@@ -304,18 +306,16 @@ VisibilityComplex2D visibility_complex(const Scene2D& s, void (*progress)(double
   std::vector<std::optional<std::array<int, 2>>> pair_of(uf.p.size());
   auto sorted = [](int x, int y) { return x < y ? std::array<int, 2>{x, y} : std::array<int, 2>{y, x}; };
   for (std::size_t i = 0; i < B.size(); ++i) {
-    const int A = B[i].end_a.object, Oa = B[i].object_a, Ob = B[i].object_b, Bo = B[i].end_b.object;
-    const std::array<std::array<int, 2>, 6> pairs{sorted(A, Oa), sorted(A, Ob), sorted(A, Bo),
-                                                  sorted(Oa, Ob), sorted(Oa, Bo), sorted(Ob, Bo)};
     // an empty extension (the line continues along an edge of the endpoint) does not name the object
     // beyond: it is the object met by the nearby segments that miss the endpoint's object
     const bool empty_a = B[i].end_a.kind == SegmentEnd2D::Vertex && B[i].end_a.id == B[i].a;
     const bool empty_b = B[i].end_b.kind == SegmentEnd2D::Vertex && B[i].end_b.id == B[i].b;
-    const int A2 = empty_a ? object_beyond_empty_extension(s, B[i].a, P[B[i].b], P[B[i].a]) : A;
-    const int B2 = empty_b ? object_beyond_empty_extension(s, B[i].b, P[B[i].a], P[B[i].b]) : Bo;
-    const std::array<std::array<int, 2>, 6> pairs2{sorted(A2, Oa), sorted(A2, Ob), sorted(A2, B2),
-                                                   sorted(Oa, Ob), sorted(Oa, B2), sorted(Ob, B2)};
-    for (int k = 0; k < 6; ++k) pair_of[vslot[i][k]] = empty_a || empty_b ? pairs2[k] : pairs[k];
+    const int A = empty_a ? object_beyond_empty_extension(s, B[i].a, P[B[i].b], P[B[i].a]) : B[i].end_a.object;
+    const int Bo = empty_b ? object_beyond_empty_extension(s, B[i].b, P[B[i].a], P[B[i].b]) : B[i].end_b.object;
+    const int Oa = B[i].object_a, Ob = B[i].object_b;
+    const std::array<std::array<int, 2>, 6> pairs{sorted(A, Oa), sorted(A, Ob), sorted(A, Bo),
+                                                  sorted(Oa, Ob), sorted(Oa, Bo), sorted(Ob, Bo)};
+    for (int k = 0; k < 6; ++k) pair_of[vslot[i][k]] = pairs[k];
   }
   for (std::size_t j = 0; j < cx.edges.size(); ++j) {
     const ComplexEdge2D& e = cx.edges[j];
