@@ -37,30 +37,6 @@ bool outside_box(const Point2& a, const Point2& b, const Point2& p) {
          p.iy.sup() < std::min(a.iy.inf(), b.iy.inf()) || p.iy.inf() > std::max(a.iy.sup(), b.iy.sup());
 }
 
-// Crossing-number test; p must not lie on the ring. Exact.
-bool inside_ring(const std::vector<Point2>& pts, int first, int size, const Point2& p) {
-  bool in = false;
-  for (int i = 0; i < size; ++i) {
-    const Point2& a = pts[first + i];
-    const Point2& b = pts[first + (i + 1) % size];
-    const bool a_above = above(a, p), b_above = above(b, p);
-    if (a_above == b_above) continue;
-    // edge crosses the horizontal line through p; is the crossing right of p?
-    const Sign o = orientation2(a, b, p);
-    if ((o == Sign::Positive) == b_above) in = !in;
-  }
-  return in;
-}
-
-bool on_ring(const std::vector<Point2>& pts, int first, int size, const Point2& p) {
-  for (int i = 0; i < size; ++i) {
-    const Point2& a = pts[first + i];
-    const Point2& b = pts[first + (i + 1) % size];
-    if (outside_box(a, b, p)) continue;
-    if (orientation2(a, b, p) == Sign::Zero && dot_sign(p, a, p, b) != Sign::Positive) return true;
-  }
-  return false;
-}
 
 struct EdgeRef {
   int a, b;        // vertex ids
@@ -101,6 +77,30 @@ void check_edges(const Scene2D& s) {
 }
 
 }  // namespace
+
+bool inside_ring(const std::vector<Point2>& pts, int first, int size, const Point2& p) {
+  bool in = false;
+  for (int i = 0; i < size; ++i) {
+    const Point2& a = pts[first + i];
+    const Point2& b = pts[first + (i + 1) % size];
+    const bool a_above = above(a, p), b_above = above(b, p);
+    if (a_above == b_above) continue;
+    // edge crosses the horizontal line through p; is the crossing right of p?
+    const Sign o = orientation2(a, b, p);
+    if ((o == Sign::Positive) == b_above) in = !in;
+  }
+  return in;
+}
+
+bool on_ring(const std::vector<Point2>& pts, int first, int size, const Point2& p) {
+  for (int i = 0; i < size; ++i) {
+    const Point2& a = pts[first + i];
+    const Point2& b = pts[first + (i + 1) % size];
+    if (outside_box(a, b, p)) continue;
+    if (orientation2(a, b, p) == Sign::Zero && dot_sign(p, a, p, b) != Sign::Positive) return true;
+  }
+  return false;
+}
 
 Scene2D make_scene2d(const std::vector<PolygonInput2D>& polygons) {
   Scene2D s;

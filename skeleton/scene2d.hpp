@@ -55,6 +55,11 @@ Scene2D make_scene2d(const std::vector<PolygonInput2D>& polygons);
 // `margin_ratio` times the larger bounding-box side (at least 1). Coordinates are rounded outward to doubles.
 Scene2D with_frame(const Scene2D& scene, double margin_ratio = 0.5);
 
+// Exact tests of p against the ring pts[first .. first+size-1] (closed, any orientation): inside_ring by
+// crossing number (p must not lie on the ring), on_ring iff p lies on one of its edges (vertices included).
+bool inside_ring(const std::vector<Point2>& pts, int first, int size, const Point2& p);
+bool on_ring(const std::vector<Point2>& pts, int first, int size, const Point2& p);
+
 // True iff point p lies in the interior of some object (not on a boundary, not in free space).
 // Exact. O(number of vertices).
 bool inside_obstacle(const Scene2D& scene, const Point2& p);

@@ -16,10 +16,14 @@ void require_free_segment(const Scene2D& s, const Point2& a, const Point2& b, co
   if (inside_obstacle(s, a)) throw std::invalid_argument(std::string(name) + " lies inside an object");
 }
 
-namespace {
+void add_line_crossing(std::vector<Exact>& out, const Point2& a, const Exact& dx, const Exact& dy, const Point2& p,
+                       const Exact& ex, const Exact& ey) {
+  const Exact den = dx * ey - dy * ex;
+  if (CGAL::sign(den) == CGAL::ZERO) return;
+  out.push_back(((p.x - a.x) * ey - (p.y - a.y) * ex) / den);
+}
 
-// Sorted distinct values of `v` inside (0, 1), with 0 and 1 added.
-std::vector<Exact> breakpoints(std::vector<Exact> v) {
+std::vector<Exact> unit_interval_cuts(std::vector<Exact> v) {
   v.erase(std::remove_if(v.begin(), v.end(), [](const Exact& x) { return !(x > 0 && x < 1); }), v.end());
   v.push_back(0);
   v.push_back(1);
@@ -27,10 +31,6 @@ std::vector<Exact> breakpoints(std::vector<Exact> v) {
   v.erase(std::unique(v.begin(), v.end()), v.end());
   return v;
 }
-
-Exact cross(const Exact& ax, const Exact& ay, const Exact& bx, const Exact& by) { return ax * by - ay * bx; }
-
-}  // namespace
 
 SegmentVisibility2D segment_visibility(const Scene2D& scene, const Point2& s0, const Point2& s1, const Point2& t0,
                                        const Point2& t1) {
@@ -44,27 +44,18 @@ SegmentVisibility2D segment_visibility(const Scene2D& scene, const Point2& s0, c
   pts.push_back(&t1);
   // sigma where the line through a with direction (dx, dy) meets the line of S
   std::vector<Exact> sig;
-  auto add_sigma = [&](const Point2& a, const Exact& dx, const Exact& dy) {
-    const Exact den = cross(dx, dy, sdx, sdy);
-    if (CGAL::sign(den) == CGAL::ZERO) return;
-    sig.push_back(-cross(dx, dy, s0.x - a.x, s0.y - a.y) / den);
-  };
+  auto add_sigma = [&](const Point2& a, const Exact& dx, const Exact& dy) { add_line_crossing(sig, s0, sdx, sdy, a, dx, dy); };
   for (std::size_t i = 0; i < pts.size(); ++i) {
     for (std::size_t j = i + 1; j < pts.size(); ++j) add_sigma(*pts[i], pts[j]->x - pts[i]->x, pts[j]->y - pts[i]->y);
     add_sigma(*pts[i], tdx, tdy);  // pole of tau_v
   }
-  const std::vector<Exact> sigmas = breakpoints(std::move(sig));
+  const std::vector<Exact> sigmas = unit_interval_cuts(std::move(sig));
   for (std::size_t i = 0; i + 1 < sigmas.size(); ++i) {
     const Exact sm = (sigmas[i] + sigmas[i + 1]) / 2;
     const Point2 s(s0.x + sm * sdx, s0.y + sm * sdy);
     std::vector<Exact> tau;
-    for (const Point2& v : scene.points) {
-      const Exact vx = v.x - s.x, vy = v.y - s.y;
-      const Exact den = cross(vx, vy, tdx, tdy);
-      if (CGAL::sign(den) == CGAL::ZERO) continue;
-      tau.push_back(-cross(vx, vy, t0.x - s.x, t0.y - s.y) / den);
-    }
-    const std::vector<Exact> taus = breakpoints(std::move(tau));
+    for (const Point2& v : scene.points) add_line_crossing(tau, t0, tdx, tdy, s, v.x - s.x, v.y - s.y);
+    const std::vector<Exact> taus = unit_interval_cuts(std::move(tau));
     for (std::size_t j = 0; j + 1 < taus.size(); ++j) {
       const Exact tm = (taus[j] + taus[j + 1]) / 2;
       const Point2 t(t0.x + tm * tdx, t0.y + tm * tdy);

@@ -4,6 +4,7 @@
 
 #include <optional>
 #include <stdexcept>
+#include <vector>
 
 namespace exactvis {
 
@@ -26,6 +27,14 @@ struct SegmentVisibility2D {
 // stops at the first witness.
 SegmentVisibility2D segment_visibility(const Scene2D& scene, const Point2& s0, const Point2& s1, const Point2& t0,
                                        const Point2& t1);
+
+// Appends to `out` the parameter lambda of the point a + lambda (dx, dy) where that line meets the line through
+// p with direction (ex, ey), unless the two are parallel. Exact.
+void add_line_crossing(std::vector<Exact>& out, const Point2& a, const Exact& dx, const Exact& dy, const Point2& p,
+                       const Exact& ex, const Exact& ey);
+
+// The values of v strictly inside (0, 1), with 0 and 1 added, sorted and distinct: the cuts of [0, 1].
+std::vector<Exact> unit_interval_cuts(std::vector<Exact> v);
 
 // Throws std::invalid_argument("<name> has zero length / meets a polygon boundary / lies inside an object")
 // unless [a, b] has positive length, meets no polygon boundary and lies outside the objects. O(n).
