@@ -107,15 +107,7 @@ int run(const Visibility2DOptions& o) {
   const Point2 q = parse_point(o.from);
   const Scene2D base = load_scene2d(o.scene, o.slice);
   // the frame must contain q strictly: widen it until it does
-  double margin = o.margin;
-  Scene2D scene = with_frame(base, margin);
-  for (int k = 0; k < 64; ++k) {
-    const Ring2D& fr = scene.rings[scene.frame_ring];
-    const Point2 &lo = scene.points[fr.first], &hi = scene.points[fr.first + 2];
-    if (lo.x < q.x && q.x < hi.x && lo.y < q.y && q.y < hi.y) break;
-    margin = 2 * margin + 1;
-    scene = with_frame(base, margin);
-  }
+  const Scene2D scene = with_frame_around(base, {q}, o.margin);
   // both throw std::invalid_argument for q inside an object / on a boundary
   VisibilityPolygon2D vp;
   std::vector<int> seen;

@@ -13,19 +13,9 @@ SegmentVisibility2D segment_visibility_in_complex(const ComplexWalkIndex2D& inde
   ComplexSegmentStats2D st;
   SegmentVisibility2D out;
   // a frame containing S and T strictly (the polygons are clipped by it)
-  double margin = 0.5;
-  Scene2D framed = with_frame(scene, margin);
-  for (int k = 0;; ++k) {
-    const Ring2D& fr = framed.rings[framed.frame_ring];
-    const Point2 &lo = framed.points[fr.first], &hi = framed.points[fr.first + 2];
-    bool inside = true;
-    for (const Point2* p : {&s0, &s1, &t0, &t1})
-      inside = inside && lo.x < p->x && p->x < hi.x && lo.y < p->y && p->y < hi.y;
-    if (inside) break;
-    if (k == 64) throw std::invalid_argument("segments too far from the scene for a frame");
-    margin = 2 * margin + 1;
-    framed = with_frame(scene, margin);
-  }
+  const Scene2D framed = with_frame_around(scene, {s0, s1, t0, t1}, 0.5);
+  for (const Point2* p : {&s0, &s1, &t0, &t1})
+    if (!frame_contains(framed, *p)) throw std::invalid_argument("segments too far from the scene for a frame");
   // sigmas: S meets the line through two vertices seeing each other (strict pairs, ring edges) or through
   // t0 / t1 and a vertex
   const Exact sdx = s1.x - s0.x, sdy = s1.y - s0.y, tdx = t1.x - t0.x, tdy = t1.y - t0.y;

@@ -216,6 +216,22 @@ Scene2D with_frame(const Scene2D& scene, double margin_ratio) {
   return s;
 }
 
+bool frame_contains(const Scene2D& framed, const Point2& p) {
+  const Ring2D& fr = framed.rings[framed.frame_ring];
+  const Point2 &lo = framed.points[fr.first], &hi = framed.points[fr.first + 2];
+  return lo.x < p.x && p.x < hi.x && lo.y < p.y && p.y < hi.y;
+}
+
+Scene2D with_frame_around(const Scene2D& scene, const std::vector<Point2>& points, double margin_ratio) {
+  Scene2D framed = with_frame(scene, margin_ratio);
+  for (int k = 0; k < 64; ++k) {
+    if (std::all_of(points.begin(), points.end(), [&](const Point2& p) { return frame_contains(framed, p); })) break;
+    margin_ratio = 2 * margin_ratio + 1;
+    framed = with_frame(scene, margin_ratio);
+  }
+  return framed;
+}
+
 bool on_boundary(const Scene2D& scene, const Point2& p) {
   for (const Ring2D& r : scene.rings)
     if (on_ring(scene.points, r.first, r.size, p)) return true;

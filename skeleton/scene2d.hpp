@@ -60,6 +60,13 @@ Scene2D with_frame(const Scene2D& scene, double margin_ratio = 0.5);
 bool inside_ring(const std::vector<Point2>& pts, int first, int size, const Point2& p);
 bool on_ring(const std::vector<Point2>& pts, int first, int size, const Point2& p);
 
+// True iff p lies strictly inside the frame box of `framed` (a scene made by with_frame). Exact.
+bool frame_contains(const Scene2D& framed, const Point2& p);
+
+// with_frame(scene, margin_ratio), the margin widened (doubled plus one, at most 64 times) until the frame
+// contains every point of `points` strictly; callers check frame_contains if the points may be absurdly far.
+Scene2D with_frame_around(const Scene2D& scene, const std::vector<Point2>& points, double margin_ratio);
+
 // True iff point p lies in the interior of some object (not on a boundary, not in free space).
 // Exact. O(number of vertices).
 bool inside_obstacle(const Scene2D& scene, const Point2& p);
