@@ -72,10 +72,7 @@ Box3 swept_box(const Point3& v, const Point3& a, const Point3& b, const Exact& t
       add(t, -big);
     }
   }
-  Box3 out;
-  out.lo = {std::max(lo[0], box.lo.x), std::max(lo[1], box.lo.y), std::max(lo[2], box.lo.z)};
-  out.hi = {std::min(hi[0], box.hi.x), std::min(hi[1], box.hi.y), std::min(hi[2], box.hi.z)};
-  return out;
+  return intersection({{lo[0], lo[1], lo[2]}, {hi[0], hi[1], hi[2]}}, box);
 }
 
 }  // namespace

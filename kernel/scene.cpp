@@ -12,6 +12,11 @@ std::int64_t Scene::index_of_id(std::int64_t id) const {
   return it - triangles.begin();
 }
 
+Box3 intersection(const Box3& a, const Box3& b) {
+  return {{std::max(a.lo.x, b.lo.x), std::max(a.lo.y, b.lo.y), std::max(a.lo.z, b.lo.z)},
+          {std::min(a.hi.x, b.hi.x), std::min(a.hi.y, b.hi.y), std::min(a.hi.z, b.hi.z)}};
+}
+
 Box3 bounding_box(const Scene& scene) {
   const double inf = std::numeric_limits<double>::infinity();
   Box3 b{{inf, inf, inf}, {-inf, -inf, -inf}};

@@ -43,4 +43,7 @@ struct Box3 {
 
 Box3 bounding_box(const Scene& scene);
 
+// The common part of two boxes (empty() if they do not overlap).
+Box3 intersection(const Box3& a, const Box3& b);
+
 }  // namespace exactvis
