@@ -229,19 +229,7 @@ namespace {
 TEST(EvEvents, SegmentEndsAgreeWithLinearScan) {
   int checked = 0;
   for (unsigned seed = 1; seed <= 12; ++seed) {
-    std::mt19937 rng(500 + seed);
-    std::uniform_int_distribution<int> coord(0, 6);
-    std::vector<Point3> v;
-    std::vector<std::array<int, 3>> t;
-    while (t.size() < 8) {
-      Point3 p[3];
-      for (auto& q : p) q = {double(coord(rng)), double(coord(rng)), double(coord(rng))};
-      if (collinear(p[0], p[1], p[2])) continue;
-      const int b = static_cast<int>(v.size());
-      v.insert(v.end(), {p[0], p[1], p[2]});
-      t.push_back({b, b + 1, b + 2});
-    }
-    const Scene s = make_scene(v, t);
+    const Scene s = random_soup(500 + seed, 8, 6);
     const ev_oracle::Mesh m = to_oracle(s);
     EvOptions opt;
     opt.split_at_end_objects = false;  // the sample line is the midpoint (split pieces: test_ev_interval_split.cpp)
