@@ -7,6 +7,7 @@
 
 #include <array>
 #include <cstdint>
+#include <algorithm>
 #include <optional>
 #include <random>
 #include <vector>
@@ -102,6 +103,19 @@ inline std::vector<oracle2d::Polygon> random_triangle_scene(std::uint64_t seed, 
     candidate.push_back({{t}});
     if (try_scene(candidate)) out = std::move(candidate);
   }
+  return out;
+}
+
+// Edges (ids into `scene`) as endpoint pairs, each pair and the list sorted: the form in which
+// oracle2d::brute_force_visible_edges gives them.
+inline std::vector<std::array<oracle2d::Pt, 2>> edge_endpoint_pairs(const Scene2D& scene, const std::vector<int>& ids) {
+  std::vector<std::array<oracle2d::Pt, 2>> out;
+  for (int e : ids) {
+    oracle2d::Pt a = to_pt(scene.points[e]), b = to_pt(scene.points[scene.next[e]]);
+    if (b < a) std::swap(a, b);
+    out.push_back({a, b});
+  }
+  std::sort(out.begin(), out.end(), [](const auto& x, const auto& y) { return x[0] < y[0] || (x[0] == y[0] && x[1] < y[1]); });
   return out;
 }
 

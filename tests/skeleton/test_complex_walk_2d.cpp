@@ -143,15 +143,7 @@ void check_brute(const WalkScene& w, const Point2& q, Tally& tally) {
   ++tally.brute_checked;
   std::vector<int> ids;
   visibility_polygon_in_complex(w.index, w.framed, q, nullptr, &ids);
-  std::vector<std::array<Pt, 2>> mine;
-  for (int e : ids) {
-    Pt a = to_pt(w.framed.points[e]), b = to_pt(w.framed.points[w.framed.next[e]]);
-    if (b < a) std::swap(a, b);
-    mine.push_back({a, b});
-  }
-  std::sort(mine.begin(), mine.end(), [](const auto& x, const auto& y) {
-    return x[0] < y[0] || (x[0] == y[0] && x[1] < y[1]);
-  });
+  const auto mine = edge_endpoint_pairs(w.framed, ids);
   const auto expected = oracle2d::brute_force_visible_edges(w.oracle, to_pt(q));
   bool same = mine.size() == expected.size();
   for (std::size_t i = 0; same && i < mine.size(); ++i) same = mine[i][0] == expected[i][0] && mine[i][1] == expected[i][1];

@@ -97,15 +97,7 @@ TEST(VisibilityPolygon2D, VisibleEdgesMatchBruteForce) {
     if (!make_fixture(seed, 2, fx)) continue;
     ++scenes;
     for (const Point2& q : query_points(fx, rng, 40)) {
-      std::vector<std::array<Pt, 2>> mine;
-      for (int e : visible_edges(fx.framed, q)) {
-        Pt a = to_pt(fx.framed.points[e]), b = to_pt(fx.framed.points[fx.framed.next[e]]);
-        if (b < a) std::swap(a, b);
-        mine.push_back({a, b});
-      }
-      std::sort(mine.begin(), mine.end(), [](const auto& x, const auto& y) {
-        return x[0] < y[0] || (x[0] == y[0] && x[1] < y[1]);
-      });
+      const auto mine = edge_endpoint_pairs(fx.framed, visible_edges(fx.framed, q));
       const auto expected = oracle2d::brute_force_visible_edges(fx.polys, to_pt(q));
       ASSERT_EQ(mine.size(), expected.size()) << "seed " << seed << " q=(" << q.ax << "," << q.ay << ")";
       for (std::size_t i = 0; i < mine.size(); ++i) EXPECT_TRUE(mine[i][0] == expected[i][0] && mine[i][1] == expected[i][1]);
