@@ -3,6 +3,8 @@
 // Triangular_expansion_visibility_2) on the same scenes.
 // Usage: bench_complex2d [--max-n N] [--max-old N] [--queries Q] (--max-old: largest n for the per-vertex
 // sweep). Prints tables (docs/performance.md).
+#include "bench/bench_scenes_2d.hpp"
+#include "bench/bench_util.hpp"
 #include "skeleton/complex_walk_2d.hpp"
 #include "skeleton/visibility_complex_2d.hpp"
 #include "skeleton/visibility_polygon_2d.hpp"
@@ -15,7 +17,6 @@
 #include <CGAL/Triangular_expansion_visibility_2.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -23,45 +24,10 @@
 #include <string>
 
 using namespace exactvis;
+using namespace exactvis::bench;
 
 namespace {
 
-double now() {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
-
-// Random convex polygon (k vertices on a jittered circle) centred at (cx, cy) with radius r.
-PolygonInput2D convex_polygon(std::mt19937_64& rng, double cx, double cy, double r, int k) {
-  std::uniform_real_distribution<double> u(0, 1);
-  std::vector<double> ang;
-  for (int i = 0; i < k; ++i) ang.push_back(6.283185307179586 * (i + 0.8 * u(rng)) / k);
-  PolygonInput2D p;
-  p.rings.emplace_back();
-  for (double a : ang) p.rings[0].emplace_back(cx + r * std::cos(a), cy + r * std::sin(a));
-  return p;
-}
-
-// Layouts with the same polygon count: "grid" (m x m cells), "row" (one line of polygons: heavy
-// occlusion, few bitangents), "ring" (polygons on a circle: almost all pairs see each other).
-Scene2D make_scene(const std::string& layout, int polygons, int k, std::uint64_t seed) {
-  std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> u(-1, 1);
-  std::vector<PolygonInput2D> ps;
-  if (layout == "grid") {
-    const int m = static_cast<int>(std::ceil(std::sqrt(polygons)));
-    for (int i = 0; i < polygons; ++i)
-      ps.push_back(convex_polygon(rng, 10.0 * (i % m) + u(rng), 10.0 * (i / m) + u(rng), 3.0 + u(rng), k));
-  } else if (layout == "row") {
-    for (int i = 0; i < polygons; ++i) ps.push_back(convex_polygon(rng, 10.0 * i, u(rng), 4.0 + 0.5 * u(rng), k));
-  } else {  // ring
-    const double R = 10.0 * polygons / 6.283185307179586 + 10;
-    for (int i = 0; i < polygons; ++i) {
-      const double a = 6.283185307179586 * i / polygons;
-      ps.push_back(convex_polygon(rng, R * std::cos(a), R * std::sin(a), 2.0, k));
-    }
-  }
-  return make_scene2d(ps);
-}
 
 template <class K>
 double cgal_tev_queries_per_second(const Scene2D& framed, const std::vector<Point2>& qs, double* build_seconds) {

@@ -4,6 +4,7 @@
 // Prints a table (docs/performance.md, "bench_eee_triple").
 //
 // Usage: bench_eee_triple [--kinds random,town] [--sizes 100,1000,10000,100000] [--triples 1000] [--seed 1]
+#include "bench/bench_util.hpp"
 #include "events/eee_events.hpp"
 #include "events/occluder_index.hpp"
 #include "events/scene_adjacency.hpp"
@@ -14,23 +15,10 @@
 #include <cstdio>
 #include <cstdlib>
 #include <random>
-#include <sstream>
 #include <string>
 #include <vector>
 
 using namespace exactvis;
-
-namespace {
-
-std::vector<std::string> split(const std::string& s) {
-  std::vector<std::string> out;
-  std::stringstream ss(s);
-  std::string item;
-  while (std::getline(ss, item, ',')) if (!item.empty()) out.push_back(item);
-  return out;
-}
-
-}  // namespace
 
 int main(int argc, char** argv) {
   std::vector<std::string> kinds{"random", "town"};
@@ -39,8 +27,8 @@ int main(int argc, char** argv) {
   unsigned seed = 1;
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string a = argv[i], v = argv[i + 1];
-    if (a == "--kinds") kinds = split(v);
-    else if (a == "--sizes") sizes = split(v);
+    if (a == "--kinds") kinds = bench::split(v);
+    else if (a == "--sizes") sizes = bench::split(v);
     else if (a == "--triples") triples = std::atoi(v.c_str());
     else if (a == "--seed") seed = static_cast<unsigned>(std::atoi(v.c_str()));
     else {

@@ -4,6 +4,7 @@
 // Usage: bench_events [--kinds town,forest,random,room] [--full 100,300,1000,3000] [--light 1000,10000,100000]
 //                     [--eee-full 100,300] [--eee-light 1000,10000] [--split 1|0] [--seed 1]
 // An empty list ("--full ''") skips that table. --split 0 turns off the EV end-object splitting.
+#include "bench/bench_util.hpp"
 #include "events/eee_enumeration.hpp"
 #include "events/ev_events.hpp"
 #include "events/light_source.hpp"
@@ -14,21 +15,12 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <sstream>
 #include <string>
 #include <vector>
 
 using namespace exactvis;
 
 namespace {
-
-std::vector<std::string> split(const std::string& s) {
-  std::vector<std::string> out;
-  std::stringstream ss(s);
-  std::string item;
-  while (std::getline(ss, item, ',')) if (!item.empty()) out.push_back(item);
-  return out;
-}
 
 struct Row {
   double seconds = 0;
@@ -119,11 +111,11 @@ int main(int argc, char** argv) {
   std::uint64_t seed = 1;
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string a = argv[i], v = argv[i + 1];
-    if (a == "--kinds") kinds = split(v);
-    else if (a == "--full") full = split(v);
-    else if (a == "--light") light = split(v);
-    else if (a == "--eee-full") eee_full = split(v);
-    else if (a == "--eee-light") eee_light = split(v);
+    if (a == "--kinds") kinds = bench::split(v);
+    else if (a == "--full") full = bench::split(v);
+    else if (a == "--light") light = bench::split(v);
+    else if (a == "--eee-full") eee_full = bench::split(v);
+    else if (a == "--eee-light") eee_light = bench::split(v);
     else if (a == "--split") split_ev = v != "0";
     else if (a == "--seed") seed = std::stoull(v);
     else {

@@ -3,43 +3,18 @@
 // on grid scenes of convex 8-gons that scale. Reports the time per query, the walks per query and the
 // share of visible pairs; the two methods' answers are compared on every query where both run.
 // Usage: bench_segments2d [--max-n N] [--max-ref N] [--pairs P]
+#include "bench/bench_scenes_2d.hpp"
+#include "bench/bench_util.hpp"
 #include "skeleton/complex_segment_visibility_2d.hpp"
 #include "skeleton/segment_visibility_2d.hpp"
 
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <random>
 
 using namespace exactvis;
-
-namespace {
-
-double now() {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
-
-// m x m cells of size 10, one jittered convex 8-gon of radius ~3 per cell.
-Scene2D grid_scene(int polygons, std::uint64_t seed) {
-  std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> u(-1, 1), w(0, 1);
-  const int m = static_cast<int>(std::ceil(std::sqrt(polygons)));
-  std::vector<PolygonInput2D> ps;
-  for (int i = 0; i < polygons; ++i) {
-    const double cx = 10.0 * (i % m) + u(rng), cy = 10.0 * (i / m) + u(rng), r = 3.0 + u(rng);
-    PolygonInput2D p;
-    p.rings.emplace_back();
-    for (int j = 0; j < 8; ++j) {
-      const double a = 6.283185307179586 * (j + 0.8 * w(rng)) / 8;
-      p.rings[0].emplace_back(cx + r * std::cos(a), cy + r * std::sin(a));
-    }
-    ps.push_back(p);
-  }
-  return make_scene2d(ps);
-}
-
-}  // namespace
+using namespace exactvis::bench;
 
 int main(int argc, char** argv) {
   int max_n = 2048, max_ref = 256, pairs = 40;
@@ -53,7 +28,7 @@ int main(int argc, char** argv) {
   std::printf("%7s %9s %9s %10s %12s %12s %12s %10s %8s\n", "n", "pairs K", "visible", "index s", "complex ms/q",
               "walks/q", "lines/q", "ref ms/q", "ref/cx");
   for (int polygons = 4; polygons * 8 <= max_n; polygons *= 4) {
-    const Scene2D s = grid_scene(polygons, polygons);
+    const Scene2D s = make_scene("grid", polygons, 8, polygons);
     const double ti = now();
     const VisibilityComplex2D cx = visibility_complex(s);
     const ComplexWalkIndex2D ix = complex_walk_index(s, cx);

@@ -5,6 +5,7 @@
 // query timed alone on one thread. Prints per-query min/avg/max time for visible and hidden answers
 // separately, average splits and effective occluders, and the least-squares exponent of
 // time ~ (effective occluders)^k over the queries that used the exact CSG (see docs/performance.md).
+#include "bench/bench_util.hpp"
 #include "kernel/scene_generators.hpp"
 #include "kernel/spatial_index.hpp"
 #include "region/from_region_visibility.hpp"
@@ -14,21 +15,12 @@
 #include <cstdio>
 #include <cstring>
 #include <random>
-#include <sstream>
 #include <string>
 #include <vector>
 
 using namespace exactvis;
 
 namespace {
-
-std::vector<std::string> split(const std::string& s) {
-  std::vector<std::string> out;
-  std::stringstream in(s);
-  std::string item;
-  while (std::getline(in, item, ',')) out.push_back(item);
-  return out;
-}
 
 struct Summary {
   int n = 0;
@@ -54,8 +46,8 @@ int main(int argc, char** argv) {
   int queries = 40;
   std::uint64_t seed = 1;
   for (int i = 1; i + 1 < argc; i += 2) {
-    if (!std::strcmp(argv[i], "--sizes")) sizes = split(argv[i + 1]);
-    else if (!std::strcmp(argv[i], "--kinds")) kinds = split(argv[i + 1]);
+    if (!std::strcmp(argv[i], "--sizes")) sizes = bench::split(argv[i + 1]);
+    else if (!std::strcmp(argv[i], "--kinds")) kinds = bench::split(argv[i + 1]);
     else if (!std::strcmp(argv[i], "--queries")) queries = std::atoi(argv[i + 1]);
     else if (!std::strcmp(argv[i], "--seed")) seed = std::strtoull(argv[i + 1], nullptr, 10);
     else {
