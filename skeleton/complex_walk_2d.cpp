@@ -259,7 +259,7 @@ struct Walk {
       }
       if (!have_end) {
         const int obj = object_beyond(y, R);
-        end = first_contact(s, y, *R.from, *R.to, obj < 0 ? &frame_edges : &ix.object_edges[obj]);
+        end = first_contact_feature(s, y, *R.from, *R.to, obj < 0 ? &frame_edges : &ix.object_edges[obj]);
         if (end.kind == SegmentEnd2D::Infinity)
           throw std::logic_error("complex walk: the ray misses the object the complex names (bug)");
       }
@@ -269,7 +269,7 @@ struct Walk {
         continue;
       }
       if (end.kind == SegmentEnd2D::Infinity) {
-        end = first_contact(s, y, *R.from, *R.to, &frame_edges);
+        end = first_contact_feature(s, y, *R.from, *R.to, &frame_edges);
         if (end.kind == SegmentEnd2D::EdgeInterior) return end.id;
         if (end.kind == SegmentEnd2D::Vertex) {
           y = end.id;

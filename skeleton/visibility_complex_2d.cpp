@@ -13,11 +13,11 @@
 
 namespace exactvis {
 
-SegmentEnd2D first_contact(const Scene2D& s, int v, const Point2& d0, const Point2& d1,
-                           const std::vector<int>* edges) {
+SegmentEnd2D first_contact_feature(const Scene2D& s, int v, const Point2& d0, const Point2& d1,
+                                   const std::vector<int>* edges) {
   // Candidates are compared by orientation tests only (no parameters along the ray): of two edges crossing
   // the ray, one lies on o's side of the other's line (scene edges are disjoint); a vertex on the ray comes
-  // before an edge's crossing iff it lies on o's side of the edge's line. Only the winner's point is built.
+  // before an edge's crossing iff it lies on o's side of the edge's line.
   const auto& P = s.points;
   const Point2& o = P[v];
   SegmentEnd2D best;
@@ -55,10 +55,17 @@ SegmentEnd2D first_contact(const Scene2D& s, int v, const Point2& d0, const Poin
     if (cross_sign(o, P[a], P[a], P[b]) != cross_sign(d0, d1, P[a], P[b])) continue;
     consider(SegmentEnd2D::EdgeInterior, e);
   }
-  if (best.kind == SegmentEnd2D::Vertex) best.point = P[best.id];
-  if (best.kind == SegmentEnd2D::EdgeInterior) best.point = line_intersection(o, d0, d1, P[best.id], P[s.next[best.id]]);
   if (best.kind != SegmentEnd2D::Infinity) best.object = s.object_of(best.id);
   return best;
+}
+
+SegmentEnd2D first_contact(const Scene2D& s, int v, const Point2& d0, const Point2& d1,
+                           const std::vector<int>* edges) {
+  SegmentEnd2D end = first_contact_feature(s, v, d0, d1, edges);
+  const auto& P = s.points;
+  if (end.kind == SegmentEnd2D::Vertex) end.point = P[end.id];
+  if (end.kind == SegmentEnd2D::EdgeInterior) end.point = line_intersection(P[v], d0, d1, P[end.id], P[s.next[end.id]]);
+  return end;
 }
 
 namespace {
@@ -98,7 +105,7 @@ int object_beyond_empty_extension(const Scene2D& s, int a, const Point2& d0, con
   const int m = s.next[c] == from ? s.prev[c] : s.next[c];
   if (cross_sign(d0, d1, P[c], P[m]) != object_side) return s.object_of(a);
   const Point2 t(P[c].x + (d1.x - d0.x), P[c].y + (d1.y - d0.y));
-  return first_contact(s, c, P[c], t).object;
+  return first_contact_feature(s, c, P[c], t).object;
 }
 
 Point2 add_dirs(const Point2& o, const Point2& a0, const Point2& a1, const Point2& b0, const Point2& b1) {
@@ -254,8 +261,8 @@ VisibilityComplex2D visibility_complex(const Scene2D& s, void (*progress)(double
       if (edge.degenerate) return;
       const Point2 back(edge.sample_from.x + edge.sample_from.x - edge.sample_to.x,
                         edge.sample_from.y + edge.sample_from.y - edge.sample_to.y);
-      edge.end_objects = {first_contact(s, edge.pivot, edge.sample_from, back).object,
-                          first_contact(s, edge.pivot, edge.sample_from, edge.sample_to).object};
+      edge.end_objects = {first_contact_feature(s, edge.pivot, edge.sample_from, back).object,
+                          first_contact_feature(s, edge.pivot, edge.sample_from, edge.sample_to).object};
     });
   }
   // faces: union-find over vertex slots (6 each) and edge slots (3 each)

@@ -75,5 +75,8 @@ VisibilityComplex2D visibility_complex(const Scene2D& scene, void (*progress)(do
 // O(edges.size()).
 SegmentEnd2D first_contact(const Scene2D& scene, int v, const Point2& d0, const Point2& d1,
                            const std::vector<int>* edges = nullptr);
+// The same contact without its point (kind, id and object only): orientation tests, no construction.
+SegmentEnd2D first_contact_feature(const Scene2D& scene, int v, const Point2& d0, const Point2& d1,
+                                   const std::vector<int>* edges = nullptr);
 
 }  // namespace exactvis
