@@ -1,7 +1,7 @@
 // `exactvis visible SCENE... (--cell X0,Y0,Z0,X1,Y1,Z1 | --source-polygon "x,y,z;...") [--triangles all|ID,...]
 //  [--json] [-o result.json] [--vtp out.vtp]`: exact from-region visibility with witnesses.
 #include "apps/command_registry.hpp"
-#include "events/progress_bar.hpp"
+#include "util/progress_bar.hpp"
 #include "io/json_number.hpp"
 #include "io/load_scene.hpp"
 #include "io/write_visibility_vtp.hpp"

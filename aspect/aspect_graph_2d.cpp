@@ -3,6 +3,7 @@
 #include "skeleton/visibility_complex_2d.hpp"
 #include "skeleton/visibility_graph_2d.hpp"
 #include "skeleton/visibility_polygon_2d.hpp"
+#include "util/union_find.hpp"
 
 #include <CGAL/Arr_segment_traits_2.h>
 #include <CGAL/Arrangement_2.h>
@@ -67,13 +68,6 @@ std::vector<Point2> ccb_points(Arr::Ccb_halfedge_const_circulator c) {
   while (++c != start);
   return out;
 }
-
-struct UnionFind {
-  std::vector<int> p;
-  explicit UnionFind(int n) : p(n) { std::iota(p.begin(), p.end(), 0); }
-  int find(int x) { while (p[x] != x) x = p[x] = p[p[x]]; return x; }
-  void unite(int a, int b) { p[find(a)] = find(b); }
-};
 
 bool inside_ring_points(const std::vector<Point2>& r, const Point2& p, bool* on_edge) {
   bool in = false;

@@ -1,9 +1,9 @@
 #include "events/eee_enumeration.hpp"
 
 #include "events/eee_prefilter.hpp"
-#include "events/for_each_index.hpp"
+#include "util/for_each_index.hpp"
 #include "events/occluder_index.hpp"
-#include "events/progress_bar.hpp"
+#include "util/progress_bar.hpp"
 #include "kernel/spatial_index.hpp"
 
 #include <CGAL/Interval_nt.h>

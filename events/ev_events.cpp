@@ -2,9 +2,9 @@
 
 #include "events/ev_interval_split.hpp"
 #include "events/ev_parameter.hpp"
-#include "events/for_each_index.hpp"
+#include "util/for_each_index.hpp"
 #include "events/occluder_index.hpp"
-#include "events/progress_bar.hpp"
+#include "util/progress_bar.hpp"
 #include "events/ray_first_hit.hpp"
 #include "events/tangency.hpp"
 #include "kernel/predicates.hpp"

@@ -1,6 +1,7 @@
 #include "io/load_scene.hpp"
 
 #include "kernel/predicates.hpp"
+#include "util/union_find.hpp"
 
 #include <OpenMesh/Core/IO/IOManager.hh>
 #include <OpenMesh/Core/IO/MeshIO.hh>
@@ -745,16 +746,6 @@ RawMesh load_stl(const std::string& path, const std::string& text) {
 }
 
 // ---------------------------------------------------------------------------------------------------------
-struct UnionFind {
-  std::vector<int> parent;
-  explicit UnionFind(size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
-  int find(int x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  }
-  void unite(int a, int b) { parent[find(a)] = find(b); }
-};
-
 RawMesh load_raw(const std::string& path) {
   const auto dot = path.find_last_of('.');
   const std::string ext = dot == std::string::npos ? "" : lower(path.substr(dot));

@@ -1,4 +1,4 @@
-#include "events/progress_bar.hpp"
+#include "util/progress_bar.hpp"
 
 #include <cstdio>
 
@@ -22,6 +22,13 @@ void ProgressBar::advance(std::uint64_t steps) {
   if (now - last_ < std::chrono::milliseconds(200)) return;
   last_ = now;
   draw(done);
+}
+
+void ProgressBar::set_done(std::uint64_t done) {
+  std::uint64_t cur = done_.load();
+  while (cur < done && !done_.compare_exchange_weak(cur, done)) {
+  }
+  if (done > cur) advance(0);
 }
 
 void ProgressBar::draw(std::uint64_t done) {

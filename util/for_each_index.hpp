@@ -1,6 +1,7 @@
 #pragma once
 // One loop over the indices 0..n-1, on oneTBB's threads or in order on the calling thread: the event
-// enumerations take `parallel = false` for reproducible single-thread runs and tests.
+// enumerations and the per-cell visibility take `parallel = false` for reproducible single-thread runs and
+// tests.
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
