@@ -6,7 +6,7 @@
 #include "io/load_scene.hpp"
 #include "io/write_visibility_vtp.hpp"
 #include "io/atomic_file.hpp"
-#include "kernel/spatial_index.hpp"
+#include "kernel/triangle_index.hpp"
 #include "region/from_region_visibility.hpp"
 
 #include <nlohmann/json.hpp>
@@ -155,8 +155,8 @@ int run_visible(const VisibleOptions& o) {
 
   const Scene scene = load_scenes(o.scenes);
   const std::vector<std::int64_t> targets = parse_targets(o.triangles, scene);
-  const SpatialIndex index(scene);
-  const region::CandidateFinder finder = [&index](const Box3& b) { return index.triangles_in_box(b); };
+  const TriangleIndex index(scene);
+  const region::CandidateFinder finder = [&index](const Box3& b) { return index.candidates_in_box(b); };
   region::VisibilityOptions vo;
   vo.samples = o.samples;
   vo.seed = o.seed;

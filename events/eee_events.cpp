@@ -1,12 +1,11 @@
 #include "events/eee_events.hpp"
 
-#include "events/occluder_index.hpp"
-#include "events/ray_first_hit.hpp"
+#include "kernel/ray_first_hit.hpp"
 #include "kernel/predicates.hpp"
 #include "kernel/quadratic_polynomial.hpp"
 #include "kernel/rational_between.hpp"
 #include "kernel/segment_triangle_intersection.hpp"
-#include "kernel/spatial_index.hpp"
+#include "kernel/triangle_index.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -169,7 +168,7 @@ struct Occluder {
 
 }  // namespace
 
-std::optional<EeeEvent> eee_event(const Scene& scene, const SceneAdjacency& adj, const OccluderIndex& index,
+std::optional<EeeEvent> eee_event(const Scene& scene, const SceneAdjacency& adj, const TriangleIndex& index,
                                   int e1, int e2, int e3, EeeStats* stats) {
   std::array<int, 3> ei{e1, e2, e3};
   for (int e : ei)
@@ -349,7 +348,7 @@ std::optional<EeeEvent> eee_event(const Scene& scene, const SceneAdjacency& adj,
   // Large candidates first (a floating-point heuristic for the order only): every few occluders the free set
   // is recomputed; the search stops when it is empty and later occluders only look inside its hull.
   std::vector<std::pair<double, int>> cand;
-  for (int ti : index.triangles_in_box(box)) {
+  for (int ti : index.triangles_meeting_box(box)) {
     const auto& tr = scene.triangles[ti];
     if (has_edge(tr, E[0]->v) || has_edge(tr, E[1]->v) || has_edge(tr, E[2]->v)) continue;
     const Point3 &p0 = scene.corner(tr, 0), &p1 = scene.corner(tr, 1), &p2 = scene.corner(tr, 2);
@@ -518,7 +517,7 @@ std::optional<EeeGeneratorSegment> eee_generator_segment(const Scene& scene, con
   return EeeGeneratorSegment{l.pts[l.lo], l.pts[l.hi], l.pts[1] - l.pts[0]};
 }
 
-void eee_segment_ends(const Scene& scene, const SpatialIndex& spatial, const Box3& box, EeeEvent& event) {
+void eee_segment_ends(const Scene& scene, const TriangleIndex& spatial, const Box3& box, EeeEvent& event) {
   const Family f = event_family(scene, event);
   for (auto& iv : event.intervals) {
     const RationalLine l = rational_line(f, iv.sample_t);

@@ -26,8 +26,7 @@
 
 namespace exactvis {
 
-class OccluderIndex;
-class SpatialIndex;
+class TriangleIndex;
 
 // Why an EEE free interval ends at a parameter.
 struct EeeEnd {
@@ -79,12 +78,12 @@ struct EeeStats {
 // supporting lines are coplanar). Exact. Thread-safe (no shared mutable state besides `stats` if given).
 // Throws std::out_of_range for an index outside adj.edges.
 // Sets sample_t of each interval; end_object_front/back are left at -1 (see eee_segment_ends).
-std::optional<EeeEvent> eee_event(const Scene& scene, const SceneAdjacency& adj, const OccluderIndex& index,
+std::optional<EeeEvent> eee_event(const Scene& scene, const SceneAdjacency& adj, const TriangleIndex& index,
                                   int e1, int e2, int e3, EeeStats* stats = nullptr);
 
 // Fills end_object_front / end_object_back of every interval of `event` (rays from the sample line, see
-// EeeInterval), exactly, with events/ray_first_hit.hpp. `box` = bounding_box(scene).
-void eee_segment_ends(const Scene& scene, const SpatialIndex& spatial, const Box3& box, EeeEvent& event);
+// EeeInterval), exactly, with kernel/ray_first_hit.hpp. `box` = bounding_box(scene).
+void eee_segment_ends(const Scene& scene, const TriangleIndex& spatial, const Box3& box, EeeEvent& event);
 
 // The generator segment of L(t) at a rational t (for output): its outermost generator points `back` and
 // `front` and the direction d = Q2 - P(t), front - back a positive multiple of d; std::nullopt where L(t)

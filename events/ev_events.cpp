@@ -3,12 +3,11 @@
 #include "events/ev_interval_split.hpp"
 #include "events/ev_parameter.hpp"
 #include "util/for_each_index.hpp"
-#include "events/occluder_index.hpp"
 #include "util/progress_bar.hpp"
-#include "events/ray_first_hit.hpp"
 #include "events/tangency.hpp"
 #include "kernel/predicates.hpp"
-#include "kernel/spatial_index.hpp"
+#include "kernel/ray_first_hit.hpp"
+#include "kernel/triangle_index.hpp"
 
 
 #include <algorithm>
@@ -105,7 +104,7 @@ Vec3<Exact> ev_edge_point(const Scene& scene, const std::array<int, 2>& edge, co
   return a + t * (b - a);
 }
 
-std::optional<EvEvent> ev_event(const Scene& scene, const SceneAdjacency& adj, const OccluderIndex& index,
+std::optional<EvEvent> ev_event(const Scene& scene, const SceneAdjacency& adj, const TriangleIndex& index,
                                 const VertexFan& fan, int edge, EvStats* stats) {
   const int v = fan.vertex;
   const SceneEdge& e = adj.edges[edge];
@@ -154,7 +153,7 @@ std::optional<EvEvent> ev_event(const Scene& scene, const SceneAdjacency& adj, c
   // Occluders: closed triangles not incident to V and not having E as an edge. Large ones first (a float
   // heuristic for order only), and stop as soon as the invalid set covers [0, 1].
   std::vector<std::pair<double, int>> cand;
-  for (int ti : index.triangles_meeting(pv, pa, pb)) {
+  for (int ti : index.triangles_meeting_triangle(pv, pa, pb)) {
     const auto& t = scene.triangles[ti];
     if (has_vertex(t, v) || (has_vertex(t, e.v[0]) && has_vertex(t, e.v[1]))) continue;
     const Point3 &p0 = scene.corner(t, 0), &p1 = scene.corner(t, 1), &p2 = scene.corner(t, 2);
@@ -187,7 +186,7 @@ std::optional<EvEvent> ev_event(const Scene& scene, const SceneAdjacency& adj, c
 
 EvResult enumerate_ev_events(const Scene& scene, const EvOptions& options) {
   const SceneAdjacency adj = build_scene_adjacency(scene);
-  const OccluderIndex index(scene);
+  const TriangleIndex index(scene);
   const int nv = static_cast<int>(scene.vertices.size());
 
   std::vector<char> light_vertex(nv, 0);
@@ -230,7 +229,7 @@ EvResult enumerate_ev_events(const Scene& scene, const EvOptions& options) {
     result.stats.occluder_tests += per_vertex_stats[v].occluder_tests;
   }
   if (options.segment_ends && !result.events.empty()) {
-    const SpatialIndex spatial(scene);
+    const TriangleIndex& spatial = index;
     const Box3 box = bounding_box(scene);
     ProgressBar ends_bar("segment ends", result.events.size(), options.progress);
     auto ends = [&](EvEvent& ev) {

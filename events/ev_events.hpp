@@ -18,7 +18,7 @@
 
 namespace exactvis {
 
-class OccluderIndex;
+class TriangleIndex;
 struct VertexFan;
 
 // Why a free interval ends at a parameter.
@@ -80,7 +80,7 @@ EvResult enumerate_ev_events(const Scene& scene, const EvOptions& options = {});
 
 // The one EV event of vertex `v` and edge `adj.edges[edge]` (std::nullopt if no free interval).
 // `fan` must be build_vertex_fan(scene, adj, v). Exposed for tests and the skeleton.
-std::optional<EvEvent> ev_event(const Scene& scene, const SceneAdjacency& adj, const OccluderIndex& index,
+std::optional<EvEvent> ev_event(const Scene& scene, const SceneAdjacency& adj, const TriangleIndex& index,
                                 const VertexFan& fan, int edge, EvStats* stats = nullptr);
 
 // The point P(t) on the edge (exact).

@@ -1,6 +1,6 @@
 #include "events/ev_interval_split.hpp"
 
-#include "events/ray_first_hit.hpp"
+#include "kernel/ray_first_hit.hpp"
 #include "kernel/predicates.hpp"
 
 #include <CGAL/Interval_nt.h>
@@ -77,7 +77,7 @@ Box3 swept_box(const Point3& v, const Point3& a, const Point3& b, const Exact& t
 
 }  // namespace
 
-std::vector<EvInterval> split_ev_interval(const Scene& scene, const SpatialIndex& spatial, const Box3& box,
+std::vector<EvInterval> split_ev_interval(const Scene& scene, const TriangleIndex& spatial, const Box3& box,
                                           int vertex, const std::array<int, 2>& edge, const EvInterval& interval) {
   const Point3& pv = scene.vertices[vertex];
   const Point3& pa = scene.vertices[edge[0]];
@@ -132,8 +132,8 @@ std::vector<EvInterval> split_ev_interval(const Scene& scene, const SpatialIndex
   };
 
   // Candidate triangles of both sides and their segments in the wedge plane.
-  std::vector<std::int64_t> cand = spatial.triangles_in_box(swept_box(pv, pa, pb, interval.t0, interval.t1, box, true));
-  for (std::int64_t ti : spatial.triangles_in_box(swept_box(pv, pa, pb, interval.t0, interval.t1, box, false)))
+  std::vector<std::int64_t> cand = spatial.candidates_in_box(swept_box(pv, pa, pb, interval.t0, interval.t1, box, true));
+  for (std::int64_t ti : spatial.candidates_in_box(swept_box(pv, pa, pb, interval.t0, interval.t1, box, false)))
     cand.push_back(ti);
   std::sort(cand.begin(), cand.end());
   cand.erase(std::unique(cand.begin(), cand.end()), cand.end());

@@ -1,10 +1,10 @@
 #include "io/write_event_surfaces.hpp"
 
 #include "events/eee_events.hpp"
-#include "events/ray_first_hit.hpp"
+#include "kernel/ray_first_hit.hpp"
 #include "io/atomic_file.hpp"
 #include "kernel/predicates.hpp"
-#include "kernel/spatial_index.hpp"
+#include "kernel/triangle_index.hpp"
 
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
@@ -41,7 +41,7 @@ D3 box_exit(const Box3& box, const D3& o, const D3& d) {
 
 struct Context {
   const Scene& scene;
-  SpatialIndex spatial;
+  TriangleIndex spatial;
   Box3 box;
 };
 
@@ -82,7 +82,7 @@ std::vector<Exact> samples(const RootNumber& t0, const RootNumber& t1, int n) {
 
 void write_event_surfaces_vtp(const std::string& path, const Scene& scene, const EvResult& ev,
                               const EeeResult& eee, int samples_per_interval) {
-  const Context c{scene, SpatialIndex(scene), bounding_box(scene)};
+  const Context c{scene, TriangleIndex(scene), bounding_box(scene)};
   const int n = std::max(1, samples_per_interval);
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();

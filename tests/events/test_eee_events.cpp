@@ -1,10 +1,9 @@
 // EEE events against the brute-force oracle (tests/events/eee_oracle.hpp), exact re-checks of every reported
 // end line, and hand cases with known answers (a hyperbolic paraboloid's rulings, a regulus occluder, a cube).
 #include "events/eee_events.hpp"
-#include "events/occluder_index.hpp"
 #include "kernel/predicates.hpp"
 #include "kernel/rational_between.hpp"
-#include "kernel/spatial_index.hpp"
+#include "kernel/triangle_index.hpp"
 #include "tests/events/eee_oracle.hpp"
 #include "tests/events/event_test_scenes.hpp"
 
@@ -249,7 +248,7 @@ std::string cause_name(const EeeEnd& e) {
 }
 
 // Compares eee_event for one triple with the oracle at many rational samples, and re-checks every end.
-void check_triple(const Scene& s, const SceneAdjacency& adj, const OccluderIndex& index,
+void check_triple(const Scene& s, const SceneAdjacency& adj, const TriangleIndex& index,
                   const ev_oracle::Mesh& m, int i, int j, int k, int grid, std::mt19937& rng, CheckCounts& counts,
                   const std::string& what) {
   const auto start = std::chrono::steady_clock::now();
@@ -325,7 +324,7 @@ bool share_vertex(const SceneAdjacency& adj, int i, int j) {
 // Every triple of a scene (or a random subset of `limit` triples), compared with the oracle.
 CheckCounts check_scene(const Scene& s, const std::string& what, int limit, int grid, unsigned seed) {
   const SceneAdjacency adj = build_scene_adjacency(s);
-  const OccluderIndex index(s);
+  const TriangleIndex index(s);
   const ev_oracle::Mesh m = to_oracle(s);
   std::mt19937 rng(seed);
   std::vector<std::array<int, 3>> triples, excluded;
@@ -379,7 +378,7 @@ struct Paraboloid {
   // The EEE event of the three paraboloid edges (0, 1), (3, 4), (6, 7) in scene s (built from this).
   static std::optional<EeeEvent> event(const Scene& s) {
     const SceneAdjacency adj = build_scene_adjacency(s);
-    const OccluderIndex index(s);
+    const TriangleIndex index(s);
     return eee_event(s, adj, index, adj.edge_index(0, 1), adj.edge_index(3, 4), adj.edge_index(6, 7));
   }
 };
@@ -388,7 +387,7 @@ TEST(EeeEvents, ParaboloidFreeEverywhere) {
   const Paraboloid p;
   const Scene s = make_scene(p.v, p.t);
   const SceneAdjacency adj = build_scene_adjacency(s);
-  const OccluderIndex index(s);
+  const TriangleIndex index(s);
   const int e1 = adj.edge_index(0, 1), e2 = adj.edge_index(3, 4), e3 = adj.edge_index(6, 7);
   const auto ev = eee_event(s, adj, index, e3, e1, e2);  // any order
   ASSERT_TRUE(ev.has_value());
@@ -398,7 +397,7 @@ TEST(EeeEvents, ParaboloidFreeEverywhere) {
   EXPECT_EQ(ev->intervals[0].end0.cause, EeeEnd::Cause::EdgeEndpoint);
   // End objects of the sample line: the ray beyond the outermost generators leaves the scene.
   EeeEvent copy = *ev;
-  const SpatialIndex spatial(s);
+  const TriangleIndex spatial(s);
   eee_segment_ends(s, spatial, bounding_box(s), copy);
   EXPECT_EQ(copy.intervals[0].end_object_front, -1);
   EXPECT_EQ(copy.intervals[0].end_object_back, -1);
@@ -666,7 +665,7 @@ TEST(EeeEvents, ParallelCallsAgreeWithSerial) {
   std::mt19937 rng(99);
   const Scene s = random_scene(rng, 0);
   const SceneAdjacency adj = build_scene_adjacency(s);
-  const OccluderIndex index(s);
+  const TriangleIndex index(s);
   const int ne = static_cast<int>(adj.edges.size());
   std::vector<std::array<int, 3>> triples;
   for (int i = 0; i < ne; ++i)

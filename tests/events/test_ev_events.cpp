@@ -1,6 +1,6 @@
 // EV events against the brute-force oracle (tests/events/ev_oracle.hpp) and hand-derived closed-mesh cases.
 #include "events/ev_events.hpp"
-#include "events/occluder_index.hpp"
+#include "kernel/triangle_index.hpp"
 #include "events/tangency.hpp"
 #include "kernel/predicates.hpp"
 #include "kernel/scene_generators.hpp"
@@ -40,7 +40,7 @@ std::set<int> closed_fan_vertices(const Scene& s) {
 // Compares every (vertex, edge) pair of the scene with the oracle; returns the number of events compared.
 int compare_with_oracle(const Scene& s, const std::string& what) {
   const SceneAdjacency adj = build_scene_adjacency(s);
-  const OccluderIndex index(s);
+  const TriangleIndex index(s);
   const ev_oracle::Mesh m = to_oracle(s);
   const std::set<int> closed = closed_fan_vertices(s);
   int events = 0;
@@ -154,7 +154,7 @@ TEST(EvEvents, CubeAboveFloorWithLight) {
 TEST(EvEvents, CubeCornerToFloorEdgeTangencyChange) {
   const Scene s = cube_floor_light();
   const SceneAdjacency adj = build_scene_adjacency(s);
-  const OccluderIndex index(s);
+  const TriangleIndex index(s);
   const VertexFan fan = build_vertex_fan(s, adj, 4);
   ASSERT_EQ(fan.cycles.size(), 1u);
   const auto ev = ev_event(s, adj, index, fan, adj.edge_index(10, 11));

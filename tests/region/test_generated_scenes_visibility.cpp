@@ -2,7 +2,7 @@
 // coplanar with building bottoms, many small crown triangles): every answer checked by the independent
 // oracle (witness re-check; refutation sampling of hidden answers).
 #include "kernel/scene_generators.hpp"
-#include "kernel/spatial_index.hpp"
+#include "kernel/triangle_index.hpp"
 #include "oracles/visibility_oracle.hpp"
 #include "region/from_region_visibility.hpp"
 
@@ -21,8 +21,8 @@ struct Tally {
 };
 
 Tally check_scene(const Scene& scene, const Box3& cell, int stride) {
-  const SpatialIndex index(scene);
-  const CandidateFinder finder = [&index](const Box3& b) { return index.triangles_in_box(b); };
+  const TriangleIndex index(scene);
+  const CandidateFinder finder = [&index](const Box3& b) { return index.candidates_in_box(b); };
   std::vector<oracle::Triangle> os;
   for (const auto& t : scene.triangles) os.push_back({qv(scene.corner(t, 0)), qv(scene.corner(t, 1)), qv(scene.corner(t, 2))});
   oracle::Source src;

@@ -1,4 +1,4 @@
-#include "events/ray_first_hit.hpp"
+#include "kernel/ray_first_hit.hpp"
 
 #include "kernel/predicates.hpp"
 
@@ -45,7 +45,7 @@ std::optional<Exact> hit_parameter(const Vec3<Exact>& o, const Vec3<Exact>& d, c
 
 }  // namespace
 
-RayHit ray_first_hit(const Scene& scene, const SpatialIndex& index, const Box3& box, const Vec3<Exact>& origin,
+RayHit ray_first_hit(const Scene& scene, const TriangleIndex& index, const Box3& box, const Vec3<Exact>& origin,
                      const Vec3<Exact>& dir) {
   RayHit best;
   if (box.empty()) return best;
@@ -73,7 +73,7 @@ RayHit ray_first_hit(const Scene& scene, const SpatialIndex& index, const Box3& 
       (k == 0 ? b.lo.x : k == 1 ? b.lo.y : b.lo.z) = lo;
       (k == 0 ? b.hi.x : k == 1 ? b.hi.y : b.hi.z) = hi;
     }
-    const auto c = index.triangles_in_box(b);
+    const auto c = index.candidates_in_box(b);
     cand.insert(cand.end(), c.begin(), c.end());
   }
   std::sort(cand.begin(), cand.end());
