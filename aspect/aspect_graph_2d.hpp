@@ -9,7 +9,7 @@
 // point and its aspect (one exact angular sweep); adjacent free faces with equal aspects are merged into
 // regions, so every remaining boundary is a real event. Cost: O(m^2) arrangement of m = O(n^2) segments in
 // the worst case, plus one O(n log n) sweep per face: meant for small and medium scenes.
-#include "skeleton/scene2d.hpp"
+#include "planar/scene2d.hpp"
 
 #include <array>
 #include <utility>

@@ -2,7 +2,7 @@
 // Minimal SVG drawing of planar results (scenes, bitangents, visibility polygons, aspect regions).
 // Coordinates are world coordinates (y up); the document flips y. Drawing uses double approximations of
 // exact points: pictures are for people, never for decisions.
-#include "skeleton/scene2d.hpp"
+#include "planar/scene2d.hpp"
 
 #include <array>
 #include <string>

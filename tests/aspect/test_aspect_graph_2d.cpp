@@ -1,6 +1,6 @@
 // The 2D aspect graph checked by sampling viewpoints with the brute-force oracle: the same aspect everywhere
 // inside a region, a different aspect across every region boundary.
-#include "../skeleton/scene2d_test_util.hpp"
+#include "tests/planar/scene2d_test_util.hpp"
 #include "aspect/aspect_graph_2d.hpp"
 
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-#include "skeleton/point2d.hpp"
+#include "planar/point2d.hpp"
 
 namespace exactvis {
 

@@ -1,4 +1,4 @@
-#include "skeleton/scene2d.hpp"
+#include "planar/scene2d.hpp"
 
 #include <algorithm>
 #include <cmath>

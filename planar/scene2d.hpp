@@ -8,7 +8,7 @@
 //   holes clockwise. A ring with the obstacle on its right would make "free space" mean the other side.
 // - Optionally a frame ring (a box, obstacle outside) bounds the free space; its object index is
 //   `num_objects` and `frame_ring` names it. Queries that need a bounded free space add one.
-#include "skeleton/point2d.hpp"
+#include "planar/point2d.hpp"
 
 #include <stdexcept>
 #include <string>

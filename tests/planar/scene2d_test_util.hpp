@@ -3,7 +3,7 @@
 // random degenerate scene generators shared by the 2D suites (boxes with flat vertices and holes, triangles
 // on a small grid).
 #include "oracles/visibility2d_oracle.hpp"
-#include "skeleton/scene2d.hpp"
+#include "planar/scene2d.hpp"
 
 #include <array>
 #include <cstdint>

@@ -1,6 +1,8 @@
-// Sections of 3D meshes by a plane (io/scene2d_json.hpp): loops, holes from nesting, and clear errors.
+// Sections of 3D meshes by a plane (planar/slice_scene.hpp, read from files by io/scene2d_json.hpp): loops,
+// holes from nesting, and clear errors.
 #include "io/load_scene.hpp"
 #include "io/scene2d_json.hpp"
+#include "planar/slice_scene.hpp"
 #include "skeleton/visibility_graph_2d.hpp"
 
 #include <gtest/gtest.h>
@@ -71,4 +73,29 @@ TEST(Slice2D, ClearErrors) {
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("slice"), std::string::npos) << e.what();
   }
+}
+
+// The section of an in-memory scene (no file): a tetrahedron cut by x = 1/2 is one triangle with exact
+// rational corners; the plane's text is parsed exactly and bad text is a SliceError.
+TEST(Slice2D, InMemoryTetrahedron) {
+  Scene t;
+  t.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  t.triangles = {{0, {0, 2, 1}, 0}, {1, {0, 1, 3}, 0}, {2, {0, 3, 2}, 0}, {3, {1, 2, 3}, 0}};
+  t.objects = {{"tet"}};
+  const SlicePlane plane = parse_slice_plane("x=1/2");
+  EXPECT_EQ(plane.axis, 0);
+  EXPECT_EQ(plane.value, Exact(1, 2));
+  const auto polys = slice_scene(t, plane);
+  ASSERT_EQ(polys.size(), 1u);
+  ASSERT_EQ(polys[0].rings.size(), 1u);
+  ASSERT_EQ(polys[0].rings[0].size(), 3u);
+  // Plane coordinates of x = V are (y, z): the section is the triangle (0,0), (1/2,0), (0,1/2).
+  int found = 0;
+  for (const Point2& p : polys[0].rings[0])
+    for (const auto& [y, z] : {std::pair<Exact, Exact>{0, 0}, {Exact(1, 2), 0}, {0, Exact(1, 2)}})
+      found += p.x == y && p.y == z;
+  EXPECT_EQ(found, 3);
+  EXPECT_THROW(parse_slice_plane("q=1"), SliceError);
+  EXPECT_THROW(parse_slice_plane("z=1/0"), SliceError);
+  EXPECT_THROW(slice_scene(t, parse_slice_plane("x=0")), SliceError);  // through vertices
 }

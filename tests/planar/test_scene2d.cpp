@@ -1,5 +1,5 @@
 // Validation of 2D scenes: every invalid input is rejected with a clear error.
-#include "scene2d_test_util.hpp"
+#include "tests/planar/scene2d_test_util.hpp"
 
 #include <gtest/gtest.h>
 
