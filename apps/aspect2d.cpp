@@ -1,5 +1,6 @@
 // `exactvis aspect2d SCENE2D [--slice z=V] [--json] [--svg out.svg] [--vtp out.vtp] [--margin R]`: the
 // aspect graph of a planar scene: viewpoint regions of equal visible-edge sets (docs/cli.md).
+#include "apps/cli_util.hpp"
 #include "apps/command_registry.hpp"
 #include "aspect/aspect_graph_2d.hpp"
 #include "io/scene2d_json.hpp"
@@ -23,21 +24,8 @@ struct Aspect2DOptions {
 
 using ojson = nlohmann::ordered_json;  // keeps the documented key order ("counts" first)
 
-// An exact value: a JSON number when it is exactly a double, else the string "num/den".
-ojson exact_json(const Exact& x) {
-  double d = 0;
-  if (exact_double(x, &d)) return d;
-  return to_rational_string(x);
-}
-ojson point_json(const Point2& p) { return ojson::array({exact_json(p.x), exact_json(p.y)}); }
-
-void progress(double f) {
-  static int last = -1;
-  const int pct = static_cast<int>(f * 100);
-  if (pct == last) return;
-  last = pct;
-  std::cerr << "\raspect2d: " << pct << "%" << (pct == 100 ? "\n" : "") << std::flush;
-}
+using app::exact_json;  // exact values: a JSON number when exactly a double, else "num/den"
+using app::point_json;
 
 std::vector<std::array<double, 2>> approx(const std::vector<Point2>& r) {
   std::vector<std::array<double, 2>> out;
@@ -48,7 +36,8 @@ std::vector<std::array<double, 2>> approx(const std::vector<Point2>& r) {
 int run(const Aspect2DOptions& o) {
   if (!(o.margin >= 0)) throw std::invalid_argument("--margin must be >= 0");
   const Scene2D scene = load_scene2d(o.scene, o.slice);
-  const AspectGraph2D g = aspect_graph(scene, o.margin, scene.num_vertices() > 40 ? progress : nullptr);
+  const app::FractionProgress progress("aspect2d", scene.num_vertices() > 40 && app::progress_wanted(false));
+  const AspectGraph2D g = aspect_graph(scene, o.margin, progress.callback());
   if (o.json) {
     ojson j;
     j["counts"] = {{"regions", g.regions.size()}, {"adjacencies", g.adjacency.size()},

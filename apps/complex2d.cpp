@@ -1,5 +1,6 @@
 // `exactvis complex2d SCENE2D [--slice z=V] [--json] [--svg out.svg] [--vtp out.vtp]`: the 2D visibility
 // complex (free bitangents, edges, faces) of a planar scene (docs/cli.md).
+#include "apps/cli_util.hpp"
 #include "apps/command_registry.hpp"
 #include "io/scene2d_json.hpp"
 #include "io/svg_2d.hpp"
@@ -19,28 +20,16 @@ struct Complex2DOptions {
   bool json = false;
 };
 
-void progress(double f) {
-  static int last = -1;
-  const int pct = static_cast<int>(f * 100);
-  if (pct == last) return;
-  last = pct;
-  std::cerr << "\rcomplex2d: sweeps " << pct << "%" << (pct == 100 ? "\n" : "") << std::flush;
-}
-
 using ojson = nlohmann::ordered_json;  // keeps the documented key order ("counts" first)
 
-// An exact value: a JSON number when it is exactly a double, else the string "num/den".
-ojson exact_json(const Exact& x) {
-  double d = 0;
-  if (exact_double(x, &d)) return d;
-  return to_rational_string(x);
-}
-ojson point_json(const Point2& p) { return ojson::array({exact_json(p.x), exact_json(p.y)}); }
+using app::exact_json;  // exact values: a JSON number when exactly a double, else "num/den"
+using app::point_json;
 ojson end_json(const SegmentEnd2D& e) { return e.kind == SegmentEnd2D::Infinity ? ojson() : point_json(e.point); }
 
 int run(const Complex2DOptions& o) {
   const Scene2D scene = load_scene2d(o.scene, o.slice);
-  const VisibilityComplex2D cx = visibility_complex(scene, scene.num_vertices() > 2000 ? progress : nullptr);
+  const app::FractionProgress progress("complex2d: sweeps", scene.num_vertices() > 2000 && app::progress_wanted(false));
+  const VisibilityComplex2D cx = visibility_complex(scene, progress.callback());
   const auto& B = cx.graph.bitangents;
   if (o.json) {
     ojson j;

@@ -1,5 +1,6 @@
 // `exactvis events SCENE... [--light SPEC] [--kinds EV,EEE] [--json] [--vtp FILE]`: EV and EEE visual events
 // with occlusion (docs/cli.md "events", definitions in docs/theory.md section 6).
+#include "apps/cli_util.hpp"
 #include "apps/command_registry.hpp"
 #include "events/eee_enumeration.hpp"
 #include "events/ev_events.hpp"
@@ -13,7 +14,6 @@
 #include <iostream>
 #include <sstream>
 #include <stdexcept>
-#include <unistd.h>
 
 namespace {
 
@@ -48,11 +48,11 @@ int run_events(const EventsOptions& o) {
   exactvis::EeeOptions eee_opt;
   exactvis::LightSource light;
   if (!o.light.empty()) {
-    light = exactvis::select_light(scene, o.light);
+    light = exactvis::app::parse_light(scene, o.light);
     opt.light_triangles = light.triangles;
     eee_opt.light_triangles = light.triangles;
   }
-  opt.progress = eee_opt.progress = !o.no_progress && isatty(STDERR_FILENO);
+  opt.progress = eee_opt.progress = exactvis::app::progress_wanted(o.no_progress);
   opt.split_at_end_objects = !o.no_split;
   exactvis::EvResult r;
   exactvis::EeeResult eee;

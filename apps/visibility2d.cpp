@@ -2,6 +2,7 @@
 // the exact visibility polygon of a point, as JSON (by default answered by a walk in the scene's visibility
 // complex; `sweep`: one angular sweep around the point; both give the same polygon); or with --from-segment/--to-segment, segment-to-segment visibility
 // with an exact witness (docs/cli.md).
+#include "apps/cli_util.hpp"
 #include "apps/command_registry.hpp"
 #include "io/scene2d_json.hpp"
 #include "io/svg_2d.hpp"
@@ -26,13 +27,8 @@ struct Visibility2DOptions {
 
 using ojson = nlohmann::ordered_json;  // keeps the documented key order ("counts" first)
 
-// An exact value: a JSON number when it is exactly a double, else the string "num/den".
-ojson exact_json(const Exact& x) {
-  double d = 0;
-  if (exact_double(x, &d)) return d;
-  return to_rational_string(x);
-}
-ojson point_json(const Point2& p) { return ojson::array({exact_json(p.x), exact_json(p.y)}); }
+using app::exact_json;  // exact values: a JSON number when exactly a double, else "num/den"
+using app::point_json;
 
 Point2 parse_point(const std::string& text) {
   const auto comma = text.find(',');
@@ -46,14 +42,7 @@ Point2 parse_point(const std::string& text) {
 
 // "X0,Y0,X1,Y1" -> two points
 std::array<Point2, 2> parse_segment(const std::string& text, const std::string& option) {
-  std::vector<std::string> parts;
-  std::size_t start = 0;
-  while (true) {
-    const auto comma = text.find(',', start);
-    parts.push_back(text.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
-    if (comma == std::string::npos) break;
-    start = comma + 1;
-  }
+  const std::vector<std::string> parts = app::split(text, ',');
   if (parts.size() != 4) throw std::invalid_argument(option + " expects X0,Y0,X1,Y1 (got '" + text + "')");
   try {
     return {Point2(parse_rational(parts[0]), parse_rational(parts[1])),
