@@ -102,14 +102,14 @@ int run_events(const EventsOptions& o) {
     for (std::size_t k = 0; k < ev.intervals.size();) {
       std::size_t last = k;
       while (last + 1 < ev.intervals.size() &&
-             ev.intervals[last].end1.cause == exactvis::EventEnd::Cause::EndObjectChange &&
+             ev.intervals[last].end1.cause == exactvis::CriticalEnd::Cause::EndObjectChange &&
              ev.intervals[last].t1 == ev.intervals[last + 1].t0)
         ++last;
-      std::cout << " [" << exactvis::to_rational_string(ev.intervals[k].t0) << ", "
-                << exactvis::to_rational_string(ev.intervals[last].t1) << "]";
+      std::cout << " [" << exactvis::root_number_to_string(ev.intervals[k].t0) << ", "
+                << exactvis::root_number_to_string(ev.intervals[last].t1) << "]";
       if (last > k) {
         std::cout << " (end objects change at";
-        for (std::size_t c = k; c < last; ++c) std::cout << " " << exactvis::to_rational_string(ev.intervals[c].t1);
+        for (std::size_t c = k; c < last; ++c) std::cout << " " << exactvis::root_number_to_string(ev.intervals[c].t1);
         std::cout << ")";
       }
       k = last + 1;

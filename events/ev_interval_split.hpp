@@ -12,6 +12,7 @@
 // at the midpoint of each piece, adds (b) for the object found there and recurses, and finally merges equal
 // neighbours.
 #include "events/ev_events.hpp"
+#include "events/scene_adjacency.hpp"
 #include "kernel/triangle_index.hpp"
 
 #include <vector>
@@ -21,8 +22,11 @@ namespace exactvis {
 // Input: the scene, its spatial index and bounding box, the vertex id V and edge (vertex ids) of an EV event,
 // and one of its free intervals. Output: consecutive pieces covering [t0, t1] (at least one) with sample_t
 // (the piece's midpoint), beyond_edge and behind_vertex filled; neighbours differ in at least one object.
-// Outer ends keep the interval's end causes; inner ends have cause EndObjectChange. Exact.
-std::vector<EvInterval> split_ev_interval(const Scene& scene, const TriangleIndex& spatial, const Box3& box,
-                                          int vertex, const std::array<int, 2>& edge, const EvInterval& interval);
+// Outer ends keep the interval's end causes; inner ends have cause EndObjectChange, with the feature the line
+// passes through there (a vertex or an edge of a triangle meeting the wedge plane, or a crossing of two
+// triangles' sections) and its extremal line key. `adj` is the scene's adjacency. Exact.
+std::vector<CriticalInterval> split_ev_interval(const Scene& scene, const SceneAdjacency& adj,
+                                                const TriangleIndex& spatial, const Box3& box, int vertex,
+                                                const std::array<int, 2>& edge, const CriticalInterval& interval);
 
 }  // namespace exactvis

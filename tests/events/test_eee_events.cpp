@@ -56,7 +56,7 @@ bool zero3(const Vec3<RootNumber>& v) { return CGAL::is_zero(v.x) && CGAL::is_ze
 Vec3<RootNumber> rn(const Point3& p) { return {RootNumber(Exact(p.x)), RootNumber(Exact(p.y)), RootNumber(Exact(p.z))}; }
 
 // Exact re-check of an end: its line meets the three edge lines and the named feature.
-void recheck_end(const Scene& s, const EeeEvent& ev, const RootNumber& t, const EeeEnd& end, const std::string& what) {
+void recheck_end(const Scene& s, const EeeEvent& ev, const RootNumber& t, const CriticalEnd& end, const std::string& what) {
   const EeeLinePoints lp = eee_line_points(s, ev, t);
   ASSERT_FALSE(zero3(lp.direction)) << what;
   auto on_line = [&](const Vec3<RootNumber>& x) { return zero3(cross(x - lp.on_e1, lp.direction)); };
@@ -72,19 +72,19 @@ void recheck_end(const Scene& s, const EeeEvent& ev, const RootNumber& t, const 
     EXPECT_TRUE(on_line(*q)) << what;
   }
   switch (end.cause) {
-    case EeeEnd::Cause::EdgeEndpoint: {
-      ASSERT_GE(end.edge, 0);
-      const auto q = end.edge == 0 ? std::optional(lp.on_e1) : (end.edge == 1 ? lp.on_e2 : lp.on_e3);
+    case CriticalEnd::Cause::EdgeEndpoint: {
+      ASSERT_GE(end.generator, 0);
+      const auto q = end.generator == 0 ? std::optional(lp.on_e1) : (end.generator == 1 ? lp.on_e2 : lp.on_e3);
       ASSERT_TRUE(q.has_value()) << what;
       EXPECT_TRUE(zero3(*q - rn(s.vertices[end.vertex]))) << what << ": EdgeEndpoint not through the vertex";
       break;
     }
-    case EeeEnd::Cause::Singular: {
-      ASSERT_TRUE(end.edge == 1 || end.edge == 2) << what;
-      EXPECT_FALSE((end.edge == 1 ? lp.on_e2 : lp.on_e3).has_value()) << what << ": Singular end not parallel";
+    case CriticalEnd::Cause::Singular: {
+      ASSERT_TRUE(end.generator == 1 || end.generator == 2) << what;
+      EXPECT_FALSE((end.generator == 1 ? lp.on_e2 : lp.on_e3).has_value()) << what << ": Singular end not parallel";
       break;
     }
-    case EeeEnd::Cause::Tangency: {
+    case CriticalEnd::Cause::Tangency: {
       const auto& tr = s.triangles[s.index_of_id(end.triangle)];
       const Vec3<RootNumber> c0 = rn(s.corner(tr, 0)), c1 = rn(s.corner(tr, 1)), c2 = rn(s.corner(tr, 2));
       const Vec3<RootNumber> n = cross(c1 - c0, c2 - c0);
@@ -92,7 +92,7 @@ void recheck_end(const Scene& s, const EeeEvent& ev, const RootNumber& t, const 
           << what << ": Tangency end line not in the face plane";
       break;
     }
-    case EeeEnd::Cause::Occluder: {
+    case CriticalEnd::Cause::Occluder: {
       const auto& tr = s.triangles[s.index_of_id(end.triangle)];
       const auto& f = end.feature;
       if (f.kind == OccluderFeature::Kind::Vertex) {
@@ -234,12 +234,12 @@ struct CheckCounts {
   }
 };
 
-std::string cause_name(const EeeEnd& e) {
+std::string cause_name(const CriticalEnd& e) {
   switch (e.cause) {
-    case EeeEnd::Cause::EdgeEndpoint: return e.edge == 0 ? "endpoint-E1" : "endpoint-E2/E3";
-    case EeeEnd::Cause::Tangency: return "tangency";
-    case EeeEnd::Cause::Singular: return "singular";
-    case EeeEnd::Cause::Occluder:
+    case CriticalEnd::Cause::EdgeEndpoint: return e.generator == 0 ? "endpoint-E1" : "endpoint-E2/E3";
+    case CriticalEnd::Cause::Tangency: return "tangency";
+    case CriticalEnd::Cause::Singular: return "singular";
+    case CriticalEnd::Cause::Occluder:
       return e.feature.kind == OccluderFeature::Kind::Vertex ? "occluder-vertex"
              : e.feature.kind == OccluderFeature::Kind::Edge ? "occluder-edge"
                                                               : "occluder-face";
@@ -394,13 +394,13 @@ TEST(EeeEvents, ParaboloidFreeEverywhere) {
   EXPECT_EQ(ev->edges[0], (std::array<int, 2>{0, 1}));
   ASSERT_EQ(ev->intervals.size(), 1u);
   EXPECT_TRUE(ev->intervals[0].t0 == RootNumber(0) && ev->intervals[0].t1 == RootNumber(1));
-  EXPECT_EQ(ev->intervals[0].end0.cause, EeeEnd::Cause::EdgeEndpoint);
+  EXPECT_EQ(ev->intervals[0].end0.cause, CriticalEnd::Cause::EdgeEndpoint);
   // End objects of the sample line: the ray beyond the outermost generators leaves the scene.
   EeeEvent copy = *ev;
   const TriangleIndex spatial(s);
   eee_segment_ends(s, spatial, bounding_box(s), copy);
-  EXPECT_EQ(copy.intervals[0].end_object_front, -1);
-  EXPECT_EQ(copy.intervals[0].end_object_back, -1);
+  EXPECT_EQ(copy.intervals[0].front_object, -1);
+  EXPECT_EQ(copy.intervals[0].back_object, -1);
   check_scene(s, "paraboloid", 0, 64, 1);
 }
 
@@ -417,7 +417,7 @@ TEST(EeeEvents, ParaboloidWithOccluder) {
   EXPECT_TRUE(ev->intervals[0].t1 == RootNumber(Exact(1, 2)));
   EXPECT_TRUE(ev->intervals[1].t0 == RootNumber(Exact(3, 4)));
   EXPECT_TRUE(ev->intervals[1].t1 == RootNumber(1));
-  EXPECT_EQ(ev->intervals[0].end1.cause, EeeEnd::Cause::Occluder);
+  EXPECT_EQ(ev->intervals[0].end1.cause, CriticalEnd::Cause::Occluder);
   EXPECT_EQ(ev->intervals[0].end1.triangle, 3);
   EXPECT_EQ(ev->intervals[0].end1.feature.kind, OccluderFeature::Kind::Edge);
   EXPECT_EQ(ev->intervals[1].end0.feature.kind, OccluderFeature::Kind::Vertex);
@@ -457,7 +457,7 @@ TEST(EeeEvents, OccluderInTheFamilysPlaneBlocksOneLine) {
   EXPECT_TRUE(ev->intervals[0].t1 == RootNumber(Exact(5, 8)));
   EXPECT_TRUE(ev->intervals[1].t0 == RootNumber(Exact(5, 8)));
   EXPECT_TRUE(ev->intervals[1].t1 == RootNumber(1));
-  EXPECT_EQ(ev->intervals[0].end1.cause, EeeEnd::Cause::Occluder);
+  EXPECT_EQ(ev->intervals[0].end1.cause, CriticalEnd::Cause::Occluder);
   EXPECT_EQ(ev->intervals[0].end1.triangle, 3);
   EXPECT_EQ(ev->intervals[1].end0.triangle, 3);
   check_scene(s, "coplanar occluder", 0, 64, 6);
