@@ -1,6 +1,8 @@
 // Shared options of the subcommands, run as a user would (the hardening items of the house issue): exact
 // --cell text (subnormals, num/den), thread counts, empty --triangles, seeds beyond 64 bits. Each bad value
 // gives one line on stderr naming the option, a non-zero exit and no output file.
+#include "tests/cli_test_util.hpp"
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -14,17 +16,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-struct CliRun {
-  int status;
-  std::string out, err;
-};
-
-std::string slurp(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using cli_test::CliRun;
 
 int lines(const std::string& s) { return static_cast<int>(std::count(s.begin(), s.end(), '\n')); }
 
@@ -41,11 +33,7 @@ class CliOptions : public ::testing::Test {
   }
   void TearDown() override { fs::remove_all(dir_); }
   std::string path(const std::string& name) const { return (dir_ / name).string(); }
-  CliRun run(const std::string& args) const {
-    const std::string out = path("stdout"), err = path("stderr");
-    const int raw = std::system((std::string(EXACTVIS_BINARY) + " " + args + " >" + out + " 2>" + err).c_str());
-    return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(out), slurp(err)};
-  }
+  CliRun run(const std::string& args) const { return cli_test::run_exactvis(dir_, args); }
   fs::path dir_;
 };
 

@@ -3,6 +3,7 @@
 // independent of the thread count, the progress callback once per target, and refused thread counts.
 #include "kernel/scene_generators.hpp"
 #include "oracles/visibility_oracle.hpp"
+#include "tests/region/oracle_input.hpp"
 #include "region/cell_visibility.hpp"
 
 #include <gtest/gtest.h>
@@ -15,8 +16,7 @@ using namespace exactvis::region;
 
 namespace {
 
-oracle::QVec qv(const Point3& p) { return oracle::qvec(p.x, p.y, p.z); }
-oracle::QVec qv(const RationalPoint3& p) { return {mpq_class(p.x.mpq()), mpq_class(p.y.mpq()), mpq_class(p.z.mpq())}; }
+using region_test::qv;
 
 TEST(CellVisibility, AnswersCheckedByOracleAndIndependentOfThreads) {
   const Scene scene = generate_scene("town", 300, 4);
@@ -38,12 +38,8 @@ TEST(CellVisibility, AnswersCheckedByOracleAndIndependentOfThreads) {
   ASSERT_EQ(one.results.size(), targets.size());
   ASSERT_EQ(all.results.size(), targets.size());
 
-  std::vector<oracle::Triangle> os;
-  for (const auto& t : scene.triangles) os.push_back({qv(scene.corner(t, 0)), qv(scene.corner(t, 1)), qv(scene.corner(t, 2))});
-  oracle::Source src;
-  src.is_box = true;
-  src.lo = qv(cell.lo);
-  src.hi = qv(cell.hi);
+  const std::vector<oracle::Triangle> os = region_test::oracle_scene(scene);
+  const oracle::Source src = region_test::oracle_box(cell.lo, cell.hi);
   std::int64_t visible = 0;
   for (std::size_t i = 0; i < targets.size(); ++i) {
     const VisibilityResult& r = one.results[i];
