@@ -234,16 +234,9 @@ std::vector<CriticalInterval> split_ev_interval(const Scene& scene, const SceneA
     const RayHit g = ray_first_hit(scene, spatial, box, V, -d);
     return std::pair<int, int>{f.triangle, g.triangle};
   };
-  // What the line passes through at each breakpoint (the first found): an endpoint's feature, or a crossing.
-  std::map<Exact, CriticalEnd> change_at;
-  for (const auto& e : eps) {
-    if (change_at.count(e.t)) continue;
-    CriticalEnd c;
-    c.cause = CriticalEnd::Cause::EndObjectChange;
-    c.triangle = scene.triangles[e.triangle].id;
-    c.feature = *e.feature;
-    change_at.emplace(e.t, std::move(c));
-  }
+  // What the line passes through at a crossing breakpoint (the first found); endpoint breakpoints are looked
+  // up in `eps` (sorted by t) when a piece ends there.
+  std::map<Exact, CriticalEnd> crossing_at;
   // (b) crossings of a triangle's segments with the other segments, inside (t0, t1); cached per triangle.
   std::map<int, std::vector<Exact>> crossing_cache;
   auto crossings_of = [&](int tri) -> const std::vector<Exact>& {
@@ -266,13 +259,13 @@ std::vector<CriticalInterval> split_ev_interval(const Scene& scene, const SceneA
         if (const auto t = param_of(P2{f.p.alpha + u * d1.alpha, f.p.beta + u * d1.beta});
             t && *t > interval.t0 && *t < interval.t1) {
           out.push_back(*t);
-          if (!change_at.count(*t)) {
+          if (!crossing_at.count(*t)) {
             CriticalEnd c;
             c.cause = CriticalEnd::Cause::EndObjectChange;
             c.triangle = scene.triangles[tri].id;
             c.other_triangle = scene.triangles[g.triangle].id;
             c.feature = {OccluderFeature::Kind::Face, {}};
-            change_at.emplace(*t, std::move(c));
+            crossing_at.emplace(*t, std::move(c));
           }
         }
       }
@@ -356,7 +349,15 @@ std::vector<CriticalInterval> split_ev_interval(const Scene& scene, const SceneA
 
   // The end where the objects change at t (inner ends of the merged pieces).
   auto change_end = [&](const Exact& t) {
-    CriticalEnd c = change_at.at(t);
+    CriticalEnd c;
+    const auto ep = std::lower_bound(eps.begin(), eps.end(), t, [](const Endpoint& e, const Exact& x) { return e.t < x; });
+    if (ep != eps.end() && ep->t == t) {  // an endpoint breakpoint (these take precedence over crossings)
+      c.cause = CriticalEnd::Cause::EndObjectChange;
+      c.triangle = scene.triangles[ep->triangle].id;
+      c.feature = *ep->feature;
+    } else {
+      c = crossing_at.at(t);
+    }
     c.line = ev_end_key(scene, adj, vertex, edge, t, c);
     return c;
   };
