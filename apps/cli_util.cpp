@@ -117,22 +117,23 @@ LightSource parse_light(Scene& scene, const std::string& spec) {
   }
 }
 
-CLI::Validator uint64_range() {
-  return CLI::Validator(
-      [](std::string& text) -> std::string {
-        const bool digits = !text.empty() && text.find_first_not_of("0123456789") == std::string::npos;
-        if (!digits) return "'" + text + "' is not a whole number in 0 .. 18446744073709551615";
-        // 2^64 - 1 has 20 digits; compare as text after dropping leading zeros.
-        const std::string t = text.substr(std::min(text.find_first_not_of('0'), text.size() - 1));
-        const std::string max = "18446744073709551615";
-        if (t.size() > max.size() || (t.size() == max.size() && t > max))
-          return "'" + text + "' is out of range (0 .. 18446744073709551615)";
-        return {};
-      },
-      "UINT64");
+std::uint64_t parse_uint64(const std::string& text, const std::string& what) {
+  const bool digits = !text.empty() && text.find_first_not_of("0123456789") == std::string::npos;
+  if (!digits) throw std::invalid_argument(what + ": '" + text + "' is not a whole number in 0 .. 18446744073709551615");
+  // 2^64 - 1 has 20 digits; compare as text after dropping leading zeros.
+  const std::string t = text.substr(std::min(text.find_first_not_of('0'), text.size() - 1));
+  const std::string max = "18446744073709551615";
+  if (t.size() > max.size() || (t.size() == max.size() && t > max))
+    throw std::invalid_argument(what + ": '" + text + "' is out of range (0 .. 18446744073709551615)");
+  return std::stoull(t);
 }
 
-std::uint64_t parse_uint64(const std::string& text) { return std::stoull(text); }
+int check_thread_count(int threads, const std::string& what) {
+  if (threads < 0 || threads > region::kMaxThreads)
+    throw std::invalid_argument(what + ": " + std::to_string(threads) + " is not a thread count (0 = all cores, or 1 .. " +
+                                std::to_string(region::kMaxThreads) + ")");
+  return threads;
+}
 
 nlohmann::ordered_json exact_json(const Exact& x) { return nlohmann::ordered_json(exact_to_json(x)); }
 

@@ -5,11 +5,12 @@
 // drawn only when stderr is a terminal and the user did not ask for quiet).
 //
 // Errors: std::invalid_argument with a one-line message that starts with the option's name (main prints
-// "exactvis SUBCOMMAND: error: MESSAGE" and exits 1); CLI11 validators report "--option: ..." and exit 105.
+// "exactvis SUBCOMMAND: error: MESSAGE" and exits 1).
 #include "events/light_source.hpp"
 #include "kernel/number_types.hpp"
 #include "kernel/scene.hpp"
 #include "planar/point2d.hpp"
+#include "region/cell_visibility.hpp"
 #include "region/convex_polygon_3.hpp"
 #include "util/progress_bar.hpp"
 
@@ -49,10 +50,12 @@ region::Polygon3 parse_source_polygon(const std::string& text);
 // --light SPEC: the exact name of a scene object, or a polygon "x,y,z;x,y,z;x,y,z[;...]" (finite
 // decimals) appended to `scene` (events/light_source.hpp). Throws "--light 'SPEC': problem".
 LightSource parse_light(Scene& scene, const std::string& spec);
-// A CLI11 validator: a decimal integer in [0, 2^64 - 1] ("WHAT: 'T' is not in 0 .. 18446744073709551615").
-CLI::Validator uint64_range();
-// Turns std::string digits (checked by uint64_range) into the number.
-std::uint64_t parse_uint64(const std::string& text);
+// A decimal whole number in [0, 2^64 - 1] (a seed); throws "WHAT: 'T' is not a whole number in 0 ..
+// 18446744073709551615" or "WHAT: 'T' is out of range (0 .. 18446744073709551615)".
+std::uint64_t parse_uint64(const std::string& text, const std::string& what);
+// A worker thread count: 0 (all cores) or 1 .. region::kMaxThreads; throws "WHAT: N is not a thread count
+// (0 = all cores, or 1 .. 1024)".
+int check_thread_count(int threads, const std::string& what);
 
 // ---- JSON
 // An exact value in ordered JSON (the subcommands keep their documented key order): io/json_number.hpp.

@@ -79,6 +79,10 @@ int run_visible(const VisibleOptions& o) {
   if (o.cell.empty() == o.polygon.empty())
     throw std::invalid_argument("give exactly one source: --cell or --source-polygon");
   if (o.samples < 0) throw std::invalid_argument("--samples must be >= 0");
+  region::CellVisibilityOptions co;
+  co.query.samples = o.samples;
+  co.query.seed = app::parse_uint64(o.seed, "--seed");
+  co.threads = app::check_thread_count(o.threads, "--threads");
   region::VisibilitySource source;
   if (!o.cell.empty()) source.cell = app::parse_cell(o.cell);
   else source.polygon = app::parse_source_polygon(o.polygon);
@@ -87,10 +91,6 @@ int run_visible(const VisibleOptions& o) {
 
   const Scene scene = load_scenes(o.scenes);
   const std::vector<std::int64_t> targets = parse_targets(o.triangles, scene);
-  region::CellVisibilityOptions co;
-  co.query.samples = o.samples;
-  co.query.seed = app::parse_uint64(o.seed);
-  co.threads = o.threads;
   region::CellVisibility cv;
   {
     ProgressBar bar("visible", targets.size(), app::progress_wanted(o.quiet));
@@ -175,10 +175,8 @@ const exactvis::app::CommandRegistration registration("visible", 100, [](CLI::Ap
   sub->add_option("--samples", o->samples, "Random segments cast per source/target pair before the exact query")
       ->capture_default_str();
   sub->add_option("--seed", o->seed, "Seed of the sampling (answers do not depend on it)")
-      ->capture_default_str()
-      ->check(app::uint64_range());
-  sub->add_option("--threads", o->threads, "Worker threads: 0 = all cores (default), else 1 .. 1024")
-      ->check(CLI::Range(0, region::kMaxThreads));
+      ->capture_default_str();
+  sub->add_option("--threads", o->threads, "Worker threads: 0 = all cores (default), else 1 .. 1024");
   sub->add_flag("-q,--quiet", o->quiet, "No progress bar on stderr");
   return [o]() { return run_visible(*o); };
 });

@@ -66,17 +66,22 @@ TEST(CliUtil, CellAcceptsNumDenAndSubnormals) {
   EXPECT_EQ(p[0].z, Exact(1) / Exact(3));
 }
 
-TEST(CliUtil, Uint64Range) {
-  const CLI::Validator v = app::uint64_range();
-  auto check = [&](std::string s) { return v(s); };
-  EXPECT_EQ(check("0"), "");
-  EXPECT_EQ(check("18446744073709551615"), "");
-  EXPECT_EQ(check("00018446744073709551615"), "");
-  EXPECT_EQ(check("18446744073709551616"), "'18446744073709551616' is out of range (0 .. 18446744073709551615)");
-  EXPECT_EQ(check("99999999999999999999999"), "'99999999999999999999999' is out of range (0 .. 18446744073709551615)");
-  EXPECT_NE(check("-1"), "");
-  EXPECT_NE(check("1.5"), "");
-  EXPECT_EQ(app::parse_uint64("18446744073709551615"), std::numeric_limits<std::uint64_t>::max());
+TEST(CliUtil, Uint64RangeAndThreadCounts) {
+  EXPECT_EQ(app::parse_uint64("0", "--seed"), 0u);
+  EXPECT_EQ(app::parse_uint64("18446744073709551615", "--seed"), std::numeric_limits<std::uint64_t>::max());
+  EXPECT_EQ(app::parse_uint64("00018446744073709551615", "--seed"), std::numeric_limits<std::uint64_t>::max());
+  EXPECT_EQ(error_of([] { app::parse_uint64("18446744073709551616", "--seed"); }),
+            "--seed: '18446744073709551616' is out of range (0 .. 18446744073709551615)");
+  EXPECT_EQ(error_of([] { app::parse_uint64("99999999999999999999999", "-s"); }),
+            "-s: '99999999999999999999999' is out of range (0 .. 18446744073709551615)");
+  EXPECT_EQ(error_of([] { app::parse_uint64("-1", "--seed"); }),
+            "--seed: '-1' is not a whole number in 0 .. 18446744073709551615");
+  EXPECT_NE(error_of([] { app::parse_uint64("1.5", "--seed"); }), "(no error)");
+  EXPECT_EQ(app::check_thread_count(0, "--threads"), 0);
+  EXPECT_EQ(app::check_thread_count(1024, "--threads"), 1024);
+  EXPECT_EQ(error_of([] { app::check_thread_count(-3, "--threads"); }),
+            "--threads: -3 is not a thread count (0 = all cores, or 1 .. 1024)");
+  EXPECT_NE(error_of([] { app::check_thread_count(100000, "--threads"); }), "(no error)");
 }
 
 TEST(CliUtil, LightSpec) {
