@@ -116,6 +116,9 @@ void recheck_end(const Scene& s, const EeeEvent& ev, const RootNumber& t, const 
       }
       break;
     }
+    case CriticalEnd::Cause::EndObjectChange:
+      ADD_FAILURE() << what << ": an EEE interval ends at an end-object change (EV only)";
+      break;
   }
 }
 
@@ -243,6 +246,7 @@ std::string cause_name(const CriticalEnd& e) {
       return e.feature.kind == OccluderFeature::Kind::Vertex ? "occluder-vertex"
              : e.feature.kind == OccluderFeature::Kind::Edge ? "occluder-edge"
                                                               : "occluder-face";
+    case CriticalEnd::Cause::EndObjectChange: return "end-object-change";
   }
   return "?";
 }

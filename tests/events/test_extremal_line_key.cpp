@@ -57,7 +57,9 @@ TEST(ExtremalLineKey, OrderAndHashAgreeWithEquality) {
   for (const auto& a : keys)
     for (const auto& b : keys) {
       ASSERT_EQ(a == b, !(a < b) && !(b < a));
-      if (a == b) ASSERT_EQ(std::hash<ExtremalLineKey>{}(a), std::hash<ExtremalLineKey>{}(b));
+      if (a == b) {
+        ASSERT_EQ(std::hash<ExtremalLineKey>{}(a), std::hash<ExtremalLineKey>{}(b));
+      }
     }
 }
 

@@ -90,10 +90,11 @@ Matches check_keys_name_lines(const std::vector<End>& ends, const std::string& s
   std::map<ExtremalLineKey, std::size_t> first;
   for (std::size_t i = 0; i < ends.size(); ++i) {
     const auto [it, fresh] = first.emplace(ends[i].key, i);
-    if (!fresh)
+    if (!fresh) {
       EXPECT_TRUE(same_line(ends[it->second].line, ends[i].line))
           << scene << ": key " << to_string(ends[i].key) << " names two lines: " << ends[it->second].where << " and "
           << ends[i].where;
+    }
   }
   // Equal lines -> equal keys: candidates from the sorted approximations, decided exactly.
   std::vector<std::size_t> order(ends.size());
