@@ -13,8 +13,9 @@ namespace exactvis {
 //   "intervals": [[t0, t1], ...], "intervals_approx": [[..]], "ends": [[end, end], ...],
 //   "segment_ends": [{"interval", "t0", "t1", "sample_t", "beyond_edge", "behind_vertex"}, ...]}, ...],
 //   "stats": {..}} where each end is {"t", "t_approx", "cause", "triangle", "feature", "line": {"through":
-// [V, P(t)]}, "key": KEY} (exact points; KEY: extremal_line_key_to_json). "intervals" are the free intervals proper: EvIntervals split at end-object changes are
-// re-joined, and each piece is one "segment_ends" entry naming its interval.
+//   [V, P(t)]}, "key": KEY} (exact points; KEY: extremal_line_key_to_json). "intervals" are the free
+//   intervals proper: intervals split at end-object changes are re-joined, and each piece is one
+//   "segment_ends" entry naming its interval.
 nlohmann::json ev_events_to_json(const Scene& scene, const EvResult& result);
 
 // One interval end as JSON (also used by the text output).
