@@ -99,13 +99,12 @@ std::array<LumpRange, kLumpCount> read_directory(const Reader& in) {
   return lumps;
 }
 
+// "brush 3", "leaf face 7": one entry of a lump, for error messages.
 std::string entry(int lump, std::int64_t i) {
-  std::string name = kLumpNames[lump];
-  if (name.back() == 's') name.pop_back();
-  if (lump == kLeaves) name = "leaf";
-  if (lump == kLeafBrushes) name = "leaf brush";
-  if (lump == kLeafFaces) name = "leaf face";
-  return name + " " + std::to_string(i);
+  static constexpr const char* kEntryNames[kLumpCount] = {
+      "entities", "shader", "plane", "node", "leaf", "leaf face", "leaf brush", "model", "brush",
+      "brush side", "vertex", "mesh vertex", "effect", "face", "lightmap", "light volume", "visdata"};
+  return std::string(kEntryNames[lump]) + " " + std::to_string(i);
 }
 
 // Index checks: "brush 3: shader 99 out of range [0, 12)".
@@ -345,7 +344,16 @@ void check_tree(const Reader& in, BspMap& map) {
 }
 
 void check_clusters(const Reader& in, const BspMap& map) {
-  if (map.vis.n_vecs == 0) return;
+  if (map.vis.n_vecs == 0) {
+    // Without visdata the cluster count comes from the leaves; bound it so that per-cluster tables stay
+    // proportional to the file.
+    for (std::size_t i = 0; i < map.leaves.size(); ++i)
+      if (map.world_leaf[i] && map.leaves[i].cluster >= static_cast<std::int64_t>(map.leaves.size()))
+        in.fail(entry(kLeaves, i) + ": cluster " + std::to_string(map.leaves[i].cluster) +
+                " out of range: without visdata a map has fewer clusters than its " +
+                std::to_string(map.leaves.size()) + " leaves");
+    return;
+  }
   for (std::size_t i = 0; i < map.leaves.size(); ++i)
     if (map.world_leaf[i] && map.leaves[i].cluster >= map.vis.n_vecs)
       in.fail(entry(kLeaves, i) + ": cluster " + std::to_string(map.leaves[i].cluster) +

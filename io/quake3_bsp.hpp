@@ -21,7 +21,8 @@
 // and shaders, side planes and shaders, face shaders/effects (not of billboards, whose effect q3map2 leaves
 // at 0 in maps without effects)/vertex and mesh-vertex ranges, mesh vertex offsets, patch sizes); the node tree reached from node 0 is a tree (no node or leaf reached twice, which also rules out
 // cycles); plane and vertex numbers are finite and plane normals non-zero; the visdata header (n_vecs,
-// sz_vecs) matches the lump length and covers every cluster. Any failure throws InputError
+// sz_vecs) matches the lump length and covers every cluster (without visdata, clusters must be fewer than
+// the leaves). Any failure throws InputError
 // "SOURCE: problem" (one line). Memory is bounded by the input: the whole file (or archive member, at most
 // kMaxBspBytes) is held, and nothing larger than it is allocated.
 #include <array>

@@ -74,8 +74,11 @@ std::string read_zip_member(const std::string& archive, const std::string& membe
     if (got == 0) break;
     done += static_cast<zip_uint64_t>(got);
   }
+  // One more read reaches the end of the data, where libzip checks the CRC.
   char extra = 0;
-  if (done != st.size || zip_fread(file.get(), &extra, 1) != 0)
+  const zip_int64_t more = done == st.size ? zip_fread(file.get(), &extra, 1) : 0;
+  if (more < 0) throw InputError(where + ": cannot decompress the member (" + zip_file_strerror(file.get()) + ")");
+  if (done != st.size || more > 0)
     throw InputError(where + ": member's data does not match its directory size of " + std::to_string(st.size) +
                      " bytes");
   return bytes;
