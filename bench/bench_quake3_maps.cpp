@@ -6,13 +6,15 @@
 // Per map: clusters, world leaves, solid (cluster -1) leaves, brushes (all / world / solid), visdata bytes,
 // read time, exact leaf volumes time, brush polytopes time, triangles of both occluder sets, and checks:
 //   vol  = the world leaves' exact volumes sum to the world box's (the tree partitions the box);
-//   bnd  = cluster leaves whose exact volume leaves the compiler's integer leaf bounds widened by 1 (expected
-//          0: a wrong front/back convention would break it; q3map2's bounds of the solid leaves at the map's
-//          outside are smaller than their cells, so those are not compared);
+//   bnd  = cluster leaves not on the world box's boundary whose exact volume leaves the compiler's integer
+//          leaf bounds widened by 2 (q3map2 rounds its own double-precision cells to integers, and ours
+//          differ from those by ~1e-4 as the planes are float32; expected 0, a wrong front/back convention
+//          breaks it; q3map2's bounds of leaves on the world box are smaller than their cells: not compared);
+//   edge = cluster leaves touching the world box's boundary (0 for a map whose outside was filled as solid);
 //   self = clusters not visible from themselves in the visdata (expected 0);
-//   edge = cluster leaves touching the world box's boundary (0 for a sealed map);
-//   brush-centre clusters: for each world brush, the cluster of the leaf containing its polytope's vertex
-//          centroid (an interior point), by kind of brush: solid structural, solid detail, non-solid;
+//   brush centres: for each world brush, whether the leaf containing its polytope's vertex centroid (an
+//          interior point) is solid (cluster -1), by kind: solid (no detail bit), solid detail, non-solid
+//          (also by shader);
 //   samples: N random points of the world box (fixed seed), by (leaf is solid?) x (inside a solid brush?).
 // The last lines total the facts over all maps.
 #include "bench/bench_util.hpp"
@@ -48,12 +50,22 @@ Bounds bounds_of(const region::ConvexPolyhedron3& p) {
   return b;
 }
 
+// "pak1-maps.pk3:oa_dm1.bsp" for ".../pak1-maps.pk3:maps/oa_dm1.bsp", the file name for a plain .bsp.
+std::string label(const std::string& source) {
+  const std::size_t colon = source.rfind(".pk3:");
+  if (colon == std::string::npos) return source.substr(source.rfind('/') + 1);
+  const std::string archive = source.substr(0, colon + 4), member = source.substr(colon + 5);
+  return archive.substr(archive.rfind('/') + 1) + ":" + member.substr(member.rfind('/') + 1);
+}
+
 struct Totals {
   int maps = 0, failed = 0, detail_shader_maps = 0, maps_without_vis = 0;
   long detail_shaders = 0, world_brushes = 0, solid_brushes = 0, detail_solid_brushes = 0;
   long vol_bad = 0, bnd_bad = 0, self_bad = 0, edge_leaves = 0;
   std::map<std::string, std::array<long, 2>> centre;  // kind -> {in cluster -1, in a cluster}
-  std::map<std::string, long> content0_names;         // non-solid brush shaders whose centre is in solid space
+  std::map<std::string, std::array<long, 2>> nonsolid;  // non-solid shader -> {centres in cluster -1, in a cluster}
+  long leaky_maps = 0, preorder_bad = 0, nonworld_leaves = 0, nonworld_leaf_not_cluster0 = 0;
+  long solid_vertices = 0, solid_vertices_not_double = 0;
   long samples[2][2] = {{0, 0}, {0, 0}};               // [leaf solid][in solid brush]
 };
 
@@ -94,13 +106,25 @@ void report(const std::string& source, int n_samples, std::uint64_t seed, Totals
     bool out = false, touches = false;
     for (const auto& v : leaves[i].vertices)
       for (int k = 0; k < 3; ++k) {
-        out |= v[k] < Exact(l.mins[k] - 1) || v[k] > Exact(l.maxs[k] + 1);
+        out |= v[k] < Exact(l.mins[k] - 2) || v[k] > Exact(l.maxs[k] + 2);
         touches |= v[k] == box.lo[k] || v[k] == box.hi[k];
       }
-    if (l.cluster >= 0) bnd += out;
+    if (l.cluster >= 0 && !touches) bnd += out;
     if (l.cluster >= 0 && touches) ++edge;
   }
   const bool vol_ok = sum == box_volume;
+  for (std::size_t n = 0; n < map.nodes.size(); ++n)
+    for (std::int32_t c : map.nodes[n].children) tot.preorder_bad += c >= 0 && c <= static_cast<std::int32_t>(n);
+  for (std::size_t i = 0; i < map.leaves.size(); ++i)
+    if (!map.world_leaf[i]) ++tot.nonworld_leaves, tot.nonworld_leaf_not_cluster0 += map.leaves[i].cluster != 0;
+  for (std::size_t i = 0; i < map.leaves.size(); ++i)
+    if (map.world_leaf[i] && map.leaves[i].cluster < 0)
+      for (const auto& v : leaves[i].vertices) {
+        double d;
+        ++tot.solid_vertices;
+        tot.solid_vertices_not_double += !(exact_double(v.x, &d) && exact_double(v.y, &d) && exact_double(v.z, &d));
+      }
+  tot.leaky_maps += edge > 0;
   int self_bad = 0;
   for (int c = 0; c < map.cluster_count(); ++c) self_bad += !map.cluster_visible(c, c);
 
@@ -118,10 +142,10 @@ void report(const std::string& source, int n_samples, std::uint64_t seed, Totals
     c = {c.x / k, c.y / k, c.z / k};
     const BspShader& sh = map.shaders[map.brushes[b].shader];
     const bool is_solid = sh.content_flags & kContentsSolid;
-    const std::string kind = !is_solid ? "non-solid" : (sh.content_flags & kContentsDetail) ? "solid detail" : "solid structural";
+    const std::string kind = !is_solid ? "non-solid" : (sh.content_flags & kContentsDetail) ? "solid detail" : "solid, no detail";
     const bool in_solid_space = map.leaves[leaf_containing(map, c)].cluster < 0;
     tot.centre[kind][in_solid_space ? 0 : 1]++;
-    if (!is_solid && in_solid_space) tot.content0_names[sh.name + " (contents " + std::to_string(sh.content_flags) + ")"]++;
+    if (!is_solid) tot.nonsolid[sh.name + " (contents " + std::to_string(sh.content_flags) + ")"][in_solid_space ? 0 : 1]++;
   }
 
   // Samples.
@@ -157,7 +181,7 @@ void report(const std::string& source, int n_samples, std::uint64_t seed, Totals
   std::printf("%-44s %6d %6d %6d %6d %6zu %6d %6zu %9zu %7.3f %8.3f %8.3f %8ld %8ld  vol=%s bnd=%d self=%d "
               "edge=%d empty=%d detail_shaders=%d detail_solid=%d  samples(solid leaf: %ld in/%ld out of solid "
               "brushes; cluster leaf: %ld in/%ld out)\n",
-              source.substr(source.rfind('/') + 1).c_str(), map.cluster_count(), world_leaves, solid_leaves,
+              label(source).c_str(), map.cluster_count(), world_leaves, solid_leaves,
               static_cast<int>(map.brushes.size()), static_cast<std::size_t>(world.n_brushes),
               static_cast<int>(solid.size()), map.faces.size(), map.vis.bits.size() + (map.vis.n_vecs ? 8 : 0),
               t_read, t_leaves, t_brushes, leaf_tris, brush_tris, vol_ok ? "ok" : "BAD", bnd, self_bad, edge,
@@ -227,7 +251,7 @@ int main(int argc, char** argv) {
   }
   std::printf("\n%d maps read (%d failed) in %.1f s; %d without visdata\n", tot.maps, tot.failed,
               bench::now() - t0, tot.maps_without_vis);
-  std::printf("leaf volumes sum to the world box: %s (%ld maps not); leaves outside their integer bounds: %ld; "
+  std::printf("leaf volumes sum to the world box: %s (%ld maps not); cluster leaves off the box outside their integer bounds: %ld; "
               "clusters not self-visible: %ld; cluster leaves on the world box: %ld\n",
               tot.vol_bad ? "NO" : "all maps", tot.vol_bad, tot.bnd_bad, tot.self_bad, tot.edge_leaves);
   std::printf("shaders with the detail bit: %ld in %d maps; world brushes %ld, solid %ld, solid with the detail bit "
@@ -236,8 +260,14 @@ int main(int argc, char** argv) {
               tot.detail_solid_brushes);
   for (const auto& [kind, n] : tot.centre)
     std::printf("brush centres, %-16s: %ld in solid space (cluster -1), %ld in a cluster\n", kind.c_str(), n[0], n[1]);
-  std::printf("non-solid brushes whose centre is in solid space, by shader:\n");
-  for (const auto& [name, n] : tot.content0_names) std::printf("  %5ld  %s\n", n, name.c_str());
+  std::printf("non-solid brushes (by shader) with some centre in solid space: in solid space / in a cluster\n");
+  for (const auto& [name, n] : tot.nonsolid)
+    if (n[0] > 0) std::printf("  %5ld / %5ld  %s\n", n[0], n[1], name.c_str());
+  std::printf("maps with cluster leaves on the world box (leaked): %ld; node children not after their parent: %ld; "
+              "leaves outside the world tree: %ld (%ld of them not cluster 0)\n",
+              tot.leaky_maps, tot.preorder_bad, tot.nonworld_leaves, tot.nonworld_leaf_not_cluster0);
+  std::printf("corners of the solid leaves: %ld, not exactly doubles: %ld\n", tot.solid_vertices,
+              tot.solid_vertices_not_double);
   std::printf("samples: solid leaf & in a solid brush %ld, solid leaf & in none %ld, cluster leaf & in a solid "
               "brush %ld, cluster leaf & in none %ld\n",
               tot.samples[1][1], tot.samples[1][0], tot.samples[0][1], tot.samples[0][0]);
