@@ -125,37 +125,30 @@ void check_finite(const Reader& in, const std::string& who, std::initializer_lis
     if (!std::isfinite(v)) in.fail(who + ": non-finite number");
 }
 
+// Fills `out` with one entry per lump entry: parse(entry, byte offset of the entry, index).
+template <class T, class Parse>
+void read_entries(const std::array<LumpRange, kLumpCount>& L, int lump, std::vector<T>& out, Parse parse) {
+  out.resize(static_cast<std::size_t>(L[lump].count));
+  for (std::int64_t i = 0; i < L[lump].count; ++i) parse(out[i], L[lump].offset + kEntrySize[lump] * i, i);
+}
+
 void parse_lumps(const Reader& in, const std::array<LumpRange, kLumpCount>& L, BspMap& map) {
-  {
-    const LumpRange& r = L[kEntities];
-    map.entities = in.text(r.offset, r.count);
-  }
-  map.shaders.resize(static_cast<std::size_t>(L[kShaders].count));
-  for (std::int64_t i = 0; i < L[kShaders].count; ++i) {
-    const std::int64_t at = L[kShaders].offset + 72 * i;
-    map.shaders[i] = {in.text(at, 64), in.i32(at + 64), in.i32(at + 68)};
-  }
-  map.planes.resize(static_cast<std::size_t>(L[kPlanes].count));
-  for (std::int64_t i = 0; i < L[kPlanes].count; ++i) {
-    const std::int64_t at = L[kPlanes].offset + 16 * i;
-    BspPlane& p = map.planes[i];
+  map.entities = in.text(L[kEntities].offset, L[kEntities].count);
+  read_entries(L, kShaders, map.shaders, [&](BspShader& sh, std::int64_t at, std::int64_t) {
+    sh = {in.text(at, 64), in.i32(at + 64), in.i32(at + 68)};
+  });
+  read_entries(L, kPlanes, map.planes, [&](BspPlane& p, std::int64_t at, std::int64_t i) {
     p.normal = {in.f32(at), in.f32(at + 4), in.f32(at + 8)};
     p.dist = in.f32(at + 12);
     check_finite(in, entry(kPlanes, i), {p.normal[0], p.normal[1], p.normal[2], p.dist});
     if (p.normal[0] == 0 && p.normal[1] == 0 && p.normal[2] == 0) in.fail(entry(kPlanes, i) + ": zero normal");
-  }
-  map.nodes.resize(static_cast<std::size_t>(L[kNodes].count));
-  for (std::int64_t i = 0; i < L[kNodes].count; ++i) {
-    const std::int64_t at = L[kNodes].offset + 36 * i;
-    BspNode& n = map.nodes[i];
+  });
+  read_entries(L, kNodes, map.nodes, [&](BspNode& n, std::int64_t at, std::int64_t) {
     n.plane = in.i32(at);
     n.children = {in.i32(at + 4), in.i32(at + 8)};
     for (int k = 0; k < 3; ++k) n.mins[k] = in.i32(at + 12 + 4 * k), n.maxs[k] = in.i32(at + 24 + 4 * k);
-  }
-  map.leaves.resize(static_cast<std::size_t>(L[kLeaves].count));
-  for (std::int64_t i = 0; i < L[kLeaves].count; ++i) {
-    const std::int64_t at = L[kLeaves].offset + 48 * i;
-    BspLeaf& l = map.leaves[i];
+  });
+  read_entries(L, kLeaves, map.leaves, [&](BspLeaf& l, std::int64_t at, std::int64_t) {
     l.cluster = in.i32(at);
     l.area = in.i32(at + 4);
     for (int k = 0; k < 3; ++k) l.mins[k] = in.i32(at + 8 + 4 * k), l.maxs[k] = in.i32(at + 20 + 4 * k);
@@ -163,53 +156,35 @@ void parse_lumps(const Reader& in, const std::array<LumpRange, kLumpCount>& L, B
     l.n_leaf_faces = in.i32(at + 36);
     l.first_leaf_brush = in.i32(at + 40);
     l.n_leaf_brushes = in.i32(at + 44);
-  }
-  auto int_lump = [&](int lump, std::vector<std::int32_t>& out) {
-    out.resize(static_cast<std::size_t>(L[lump].count));
-    for (std::int64_t i = 0; i < L[lump].count; ++i) out[i] = in.i32(L[lump].offset + 4 * i);
-  };
-  int_lump(kLeafFaces, map.leaf_faces);
-  int_lump(kLeafBrushes, map.leaf_brushes);
-  int_lump(kMeshVertices, map.mesh_vertices);
-  map.models.resize(static_cast<std::size_t>(L[kModels].count));
-  for (std::int64_t i = 0; i < L[kModels].count; ++i) {
-    const std::int64_t at = L[kModels].offset + 40 * i;
-    BspModel& m = map.models[i];
+  });
+  const auto index = [&](std::int32_t& v, std::int64_t at, std::int64_t) { v = in.i32(at); };
+  read_entries(L, kLeafFaces, map.leaf_faces, index);
+  read_entries(L, kLeafBrushes, map.leaf_brushes, index);
+  read_entries(L, kMeshVertices, map.mesh_vertices, index);
+  read_entries(L, kModels, map.models, [&](BspModel& m, std::int64_t at, std::int64_t i) {
     for (int k = 0; k < 3; ++k) m.mins[k] = in.f32(at + 4 * k), m.maxs[k] = in.f32(at + 12 + 4 * k);
     check_finite(in, entry(kModels, i), {m.mins[0], m.mins[1], m.mins[2], m.maxs[0], m.maxs[1], m.maxs[2]});
     m.first_face = in.i32(at + 24);
     m.n_faces = in.i32(at + 28);
     m.first_brush = in.i32(at + 32);
     m.n_brushes = in.i32(at + 36);
-  }
-  map.brushes.resize(static_cast<std::size_t>(L[kBrushes].count));
-  for (std::int64_t i = 0; i < L[kBrushes].count; ++i) {
-    const std::int64_t at = L[kBrushes].offset + 12 * i;
-    map.brushes[i] = {in.i32(at), in.i32(at + 4), in.i32(at + 8)};
-  }
-  map.brush_sides.resize(static_cast<std::size_t>(L[kBrushSides].count));
-  for (std::int64_t i = 0; i < L[kBrushSides].count; ++i) {
-    const std::int64_t at = L[kBrushSides].offset + 8 * i;
-    map.brush_sides[i] = {in.i32(at), in.i32(at + 4)};
-  }
-  map.vertices.resize(static_cast<std::size_t>(L[kVertices].count));
-  for (std::int64_t i = 0; i < L[kVertices].count; ++i) {
-    const std::int64_t at = L[kVertices].offset + 44 * i;
-    BspVertex& v = map.vertices[i];
+  });
+  read_entries(L, kBrushes, map.brushes, [&](BspBrush& b, std::int64_t at, std::int64_t) {
+    b = {in.i32(at), in.i32(at + 4), in.i32(at + 8)};
+  });
+  read_entries(L, kBrushSides, map.brush_sides, [&](BspBrushSide& s, std::int64_t at, std::int64_t) {
+    s = {in.i32(at), in.i32(at + 4)};
+  });
+  read_entries(L, kVertices, map.vertices, [&](BspVertex& v, std::int64_t at, std::int64_t i) {
     for (int k = 0; k < 3; ++k) v.position[k] = in.f32(at + 4 * k), v.normal[k] = in.f32(at + 28 + 4 * k);
     for (int k = 0; k < 2; ++k) v.texcoord[k] = in.f32(at + 12 + 4 * k), v.lightmap_coord[k] = in.f32(at + 20 + 4 * k);
     for (int k = 0; k < 4; ++k) v.color[k] = in.u8(at + 40 + k);
     check_finite(in, entry(kVertices, i), {v.position[0], v.position[1], v.position[2]});
-  }
-  map.effects.resize(static_cast<std::size_t>(L[kEffects].count));
-  for (std::int64_t i = 0; i < L[kEffects].count; ++i) {
-    const std::int64_t at = L[kEffects].offset + 72 * i;
-    map.effects[i] = {in.text(at, 64), in.i32(at + 64), in.i32(at + 68)};
-  }
-  map.faces.resize(static_cast<std::size_t>(L[kFaces].count));
-  for (std::int64_t i = 0; i < L[kFaces].count; ++i) {
-    const std::int64_t at = L[kFaces].offset + 104 * i;
-    BspFace& f = map.faces[i];
+  });
+  read_entries(L, kEffects, map.effects, [&](BspEffect& e, std::int64_t at, std::int64_t) {
+    e = {in.text(at, 64), in.i32(at + 64), in.i32(at + 68)};
+  });
+  read_entries(L, kFaces, map.faces, [&](BspFace& f, std::int64_t at, std::int64_t) {
     f.shader = in.i32(at);
     f.effect = in.i32(at + 4);
     f.type = in.i32(at + 8);
@@ -220,7 +195,7 @@ void parse_lumps(const Reader& in, const std::array<LumpRange, kLumpCount>& L, B
     f.lightmap = in.i32(at + 28);
     for (int k = 0; k < 3; ++k) f.normal[k] = in.f32(at + 88 + 4 * k);
     f.patch_size = {in.i32(at + 96), in.i32(at + 100)};
-  }
+  });
   const LumpRange& vis = L[kVisData];
   if (vis.count > 0) {
     if (vis.count < 8) in.fail("visdata of " + std::to_string(vis.count) + " bytes is shorter than its 8-byte header");

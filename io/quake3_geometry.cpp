@@ -69,6 +69,17 @@ void clip_subtree(const BspMap& map, std::int32_t node, ConvexPolyhedron3 cell, 
   }
 }
 
+// Appends a triangle with the next id, or counts it as dropped when its corners are collinear (exact).
+void add_triangle(Scene& scene, const std::array<int, 3>& t, int object) {
+  const std::int64_t id = scene.faces_read++;
+  if (collinear(to_rational(scene.vertices[t[0]]), to_rational(scene.vertices[t[1]]),
+                to_rational(scene.vertices[t[2]]))) {
+    ++scene.degenerate_dropped;
+    return;
+  }
+  scene.triangles.push_back({id, t, object});
+}
+
 void add_solid_triangles(std::vector<OpaqueTriangle>& out, const OpaqueSolid& solid) {
   for (const auto& t : region::boundary_triangles(solid.volume)) out.push_back({t, solid.index});
 }
@@ -163,14 +174,7 @@ Scene opaque_scene(const BspMap& map, Occluders occluders) {
       scene.vertices.push_back({CGAL::to_double(v.x), CGAL::to_double(v.y), CGAL::to_double(v.z)});
     for (const auto& face : s.volume.faces)
       for (std::size_t i = 1; i + 1 < face.loop.size(); ++i) {
-        const std::array<int, 3> t{base + face.loop[0], base + face.loop[i], base + face.loop[i + 1]};
-        const std::int64_t id = scene.faces_read++;
-        if (collinear(to_rational(scene.vertices[t[0]]), to_rational(scene.vertices[t[1]]),
-                      to_rational(scene.vertices[t[2]]))) {
-          ++scene.degenerate_dropped;
-          continue;
-        }
-        scene.triangles.push_back({id, t, object});
+        add_triangle(scene, {base + face.loop[0], base + face.loop[i], base + face.loop[i + 1]}, object);
       }
   }
   return scene;
@@ -192,13 +196,7 @@ Scene drawn_scene(const BspMap& map) {
     for (std::int32_t k = 0; k + 2 < face.n_mesh_vertices; k += 3) {
       std::array<int, 3> t;
       for (int j = 0; j < 3; ++j) t[j] = face.first_vertex + map.mesh_vertices[face.first_mesh_vertex + k + j];
-      const std::int64_t id = scene.faces_read++;
-      if (collinear(to_rational(scene.vertices[t[0]]), to_rational(scene.vertices[t[1]]),
-                    to_rational(scene.vertices[t[2]]))) {
-        ++scene.degenerate_dropped;
-        continue;
-      }
-      scene.triangles.push_back({id, t, object});
+      add_triangle(scene, t, object);
     }
   }
   return scene;
