@@ -24,7 +24,8 @@
 // sz_vecs) matches the lump length and covers every cluster (without visdata, clusters must be fewer than
 // the leaves). Any failure throws InputError
 // "SOURCE: problem" (one line). Memory is bounded by the input: the whole file (or archive member, at most
-// kMaxBspBytes) is held, and nothing larger than it is allocated.
+// kMaxBspBytes, checked before it is read) is held, and every table is sized by its lump's entry count, so
+// the map takes a small multiple of the file's size.
 #include <array>
 #include <cstdint>
 #include <string>
