@@ -39,9 +39,11 @@ struct AspectGraph2D {
   std::size_t arrangement_faces = 0;                  // bounded faces of the arrangement
 };
 
-// Input: a scene (without frame); margin of the viewpoint frame as in with_frame. Output: the partition.
-// `progress` (may be null) gets the fraction done.
-AspectGraph2D aspect_graph(const Scene2D& scene, double margin_ratio = 0.25, void (*progress)(double) = nullptr);
+// Input: a scene (without frame); margin of the viewpoint frame as in with_frame (throws Scene2DError when
+// that frame is not representable). Output: the partition. `progress`: draw progress bars on stderr for the
+// three long stages (event segments, arrangement sweep, one visibility sweep per face). Uses all cores
+// (oneTBB) for the event segments and the faces.
+AspectGraph2D aspect_graph(const Scene2D& scene, double margin_ratio = 0.25, bool progress = false);
 
 // Region containing p (exact point location over the faces): the region index, -1 inside an object or
 // outside the frame, -2 on an arrangement edge or vertex.
