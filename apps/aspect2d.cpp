@@ -26,22 +26,6 @@ struct Aspect2DOptions {
   double margin = 0.25;
 };
 
-// Above this many scene vertices aspect2d warns about its cost (docs/cli.md).
-constexpr int kLargeScene = 200;
-
-// The warning for large scenes: the cost grows about as n^4; the estimate scales the figures measured on the
-// benchmark grids (docs/performance.md: 215 s and 0.73 GB at 216 vertices).
-std::string cost_warning(int n) {
-  const double f = std::pow(n / 216.0, 4);
-  std::ostringstream w;
-  w.precision(2);
-  w << "aspect2d: warning: " << n << " vertices (more than " << kLargeScene
-    << "): the aspect graph costs up to O(n^4) time and memory; scaled from 215 s and 0.73 GB at 216 vertices "
-       "(docs/performance.md), expect roughly "
-    << 215 * f << " s and " << 0.73 * f << " GB";
-  return w.str();
-}
-
 using ojson = nlohmann::ordered_json;  // keeps the documented key order ("counts" first)
 
 // An exact value: a JSON number when it is exactly a double, else the string "num/den".
@@ -51,6 +35,37 @@ ojson exact_json(const Exact& x) {
   return to_rational_string(x);
 }
 ojson point_json(const Point2& p) { return ojson::array({exact_json(p.x), exact_json(p.y)}); }
+
+// Above this many scene vertices aspect2d warns about its cost before it starts (docs/cli.md).
+constexpr int kLargeScene = 200;
+// Once the arrangement is built, it warns when the face stage is estimated to take longer than this.
+constexpr double kLongFaceStageSeconds = 60;
+// Cost of the face stage: one visibility sweep per face, about 4 microseconds per face and scene vertex on
+// the benchmark machine (docs/performance.md: 2.7 on a 1000-vertex polygon, 4.4 on the 96-vertex grid).
+constexpr double kSecondsPerFaceVertex = 4e-6;
+
+// The first warning: the worst-case growth, scaled from the benchmark grids (docs/performance.md: 215 s and
+// 0.73 GB at 216 vertices).
+std::string size_warning(int n) {
+  const double f = std::pow(n / 216.0, 4);
+  std::ostringstream w;
+  w.precision(2);
+  w << "aspect2d: warning: " << n << " vertices (more than " << kLargeScene
+    << "): the aspect graph costs up to O(n^4) time and memory; the benchmark grids' 215 s and 0.73 GB at 216 "
+       "vertices (docs/performance.md) scale to roughly "
+    << 215 * f << " s and " << 0.73 * f << " GB here";
+  return w.str();
+}
+
+// The second warning: the face stage's estimated time, from the number of faces.
+std::string faces_warning(std::size_t faces, int n, double seconds) {
+  std::ostringstream w;
+  w.precision(2);
+  w << "aspect2d: warning: " << faces << " arrangement faces, one visibility sweep each over " << n
+    << " vertices: roughly " << seconds << " s more (about " << kSecondsPerFaceVertex * 1e6
+    << " us per face and vertex, docs/performance.md)";
+  return w.str();
+}
 
 std::vector<std::array<double, 2>> approx(const std::vector<Point2>& r) {
   std::vector<std::array<double, 2>> out;
@@ -65,8 +80,13 @@ int run(const Aspect2DOptions& o) {
   if (!frame_box(scene, o.margin).representable)
     throw InputError(o.scene + ": the viewpoint frame (the scene's box widened by --margin times its size) would "
                      "reach beyond the largest double (1.8e308); use a smaller --margin");
-  if (scene.num_vertices() > kLargeScene && !o.quiet) std::cerr << cost_warning(scene.num_vertices()) << std::endl;
-  const AspectGraph2D g = aspect_graph(scene, o.margin, !o.quiet && isatty(STDERR_FILENO));
+  const int n = scene.num_vertices();
+  if (n > kLargeScene && !o.quiet) std::cerr << size_warning(n) << std::endl;
+  const auto warn_faces = [&](std::size_t faces) {
+    const double seconds = kSecondsPerFaceVertex * static_cast<double>(faces) * n;
+    if (seconds > kLongFaceStageSeconds && !o.quiet) std::cerr << faces_warning(faces, n, seconds) << std::endl;
+  };
+  const AspectGraph2D g = aspect_graph(scene, o.margin, !o.quiet && isatty(STDERR_FILENO), warn_faces);
   if (o.json) {
     ojson j;
     j["counts"] = {{"regions", g.regions.size()}, {"adjacencies", g.adjacency.size()},

@@ -94,7 +94,6 @@ bool inside_ring_points(const std::vector<Point2>& r, const Point2& p, bool* on_
   return in;
 }
 
-
 // Reports the arrangement sweep's progress: CGAL's sweep creates each edge when it reaches the edge's right
 // end, so the x of that end, relative to the frame's x-range, grows from 0 to 1 (display only, doubles).
 class SweepProgress : public CGAL::Arr_observer<Arr> {
@@ -123,7 +122,8 @@ class SweepProgress : public CGAL::Arr_observer<Arr> {
 
 }  // namespace
 
-AspectGraph2D aspect_graph(const Scene2D& scene, double margin_ratio, bool progress) {
+AspectGraph2D aspect_graph(const Scene2D& scene, double margin_ratio, bool progress,
+                           const std::function<void(std::size_t)>& before_faces) {
   AspectGraph2D g;
   g.framed = with_frame(scene, margin_ratio);
   const Scene2D& s = g.framed;
@@ -173,6 +173,7 @@ AspectGraph2D aspect_graph(const Scene2D& scene, double margin_ratio, bool progr
     handles.push_back(f);
   }
   g.arrangement_faces = handles.size();
+  if (before_faces) before_faces(handles.size());
   g.faces.resize(handles.size());
   std::vector<std::vector<int>> aspect(handles.size());
   std::vector<char> free_face(handles.size(), 0);

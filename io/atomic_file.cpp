@@ -40,6 +40,8 @@ void fill(const std::string& path, const std::string& temp, const std::function<
     ok = writer(temp);
   } catch (const std::exception& e) {
     why = e.what();
+    // Writers name the file they were given, our temporary: the user knows only `path`.
+    if (why.rfind(temp + ": ", 0) == 0) why = why.substr(temp.size() + 2);
   }
   if (ok) return;
   std::error_code ec;

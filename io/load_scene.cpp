@@ -367,6 +367,9 @@ struct UnionFind {
 };
 
 RawMesh load_raw(const std::string& path) {
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) fail(path, "no such file");
+  if (std::filesystem::is_directory(path, ec)) fail(path, "is a directory, not a mesh file");
   const auto dot = path.find_last_of('.');
   const std::string ext = dot == std::string::npos ? "" : lower(path.substr(dot));
   if (ext != ".obj" && ext != ".off" && ext != ".ply" && ext != ".stl")

@@ -1,7 +1,9 @@
 #include "io/svg_2d.hpp"
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 #include <cstdio>
 #include <fstream>
 #include <limits>
@@ -90,7 +92,7 @@ void svg_scene(SvgDocument2D& doc, const Scene2D& s) {
 
 void svg_write(const SvgDocument2D& d, const std::string& path) {
   std::ofstream out(path);
-  if (!out) throw std::runtime_error(path + ": cannot write");
+  if (!out) throw std::runtime_error(path + ": cannot write (" + std::strerror(errno) + ")");
   const double w = d.hi_x - d.lo_x, h = d.hi_y - d.lo_y;
   const double px = 900, py = std::max(100.0, 900 * h / std::max(w, 1e-12));
   out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << num(px) << "\" height=\"" << num(py)
@@ -99,7 +101,8 @@ void svg_write(const SvgDocument2D& d, const std::string& path) {
       << num(h) << "\" fill=\"white\"/>\n<g transform=\"scale(1,-1)\">\n";
   for (const auto& item : d.items) out << item << "\n";
   out << "</g>\n</svg>\n";
-  if (!out) throw std::runtime_error(path + ": cannot write");
+  out.close();
+  if (!out) throw std::runtime_error(path + ": cannot write (" + std::strerror(errno) + ")");
 }
 
 std::string svg_colour(int i) {

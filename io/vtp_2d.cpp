@@ -11,6 +11,7 @@
 #include <vtkPolyData.h>
 #include <vtkXMLPolyDataWriter.h>
 
+#include <cstring>
 #include <stdexcept>
 
 namespace exactvis {
@@ -57,7 +58,9 @@ void write_vtp_2d(const std::string& path, const VtpCells2D& c) {
   // Write() returns 1 even when the file could not be written; the error code tells.
   if (w->Write() != 1 || w->GetErrorCode() != 0) {
     const unsigned long code = w->GetErrorCode();
-    const std::string why = code == vtkErrorCode::OutOfDiskSpaceError  ? "out of disk space or over a file size limit"
+    // Codes below FirstVTKErrorCode are errno values (VTK passes system errors through).
+    const std::string why = code < vtkErrorCode::FirstVTKErrorCode        ? std::string(std::strerror(static_cast<int>(code)))
+                            : code == vtkErrorCode::OutOfDiskSpaceError  ? "out of disk space"
                             : code == vtkErrorCode::CannotOpenFileError ? "cannot open the file"
                                                                         : "VTK error " + std::to_string(code);
     throw std::runtime_error(path + ": cannot write (" + why + ")");

@@ -277,13 +277,25 @@ bool frame_contains(const Scene2D& framed, const Point2& p) {
 Scene2D with_frame_around(const Scene2D& scene, const std::vector<Point2>& points, double margin_ratio) {
   const VertexBox b = vertex_box(scene);
   FrameBox2D f = frame_box_of(b, margin_ratio);
+  const auto contains_all = [&](const FrameBox2D& box) {
+    return std::all_of(points.begin(), points.end(), [&](const Point2& p) { return box_contains(box, p); });
+  };
   // Each widening more than doubles the margin, so this ends after at most ~1100 steps (then the margin
   // overflows and the next frame is not representable).
-  while (f.representable &&
-         !std::all_of(points.begin(), points.end(), [&](const Point2& p) { return box_contains(f, p); })) {
+  while (f.representable && !contains_all(f)) {
     const double wider = 2 * margin_ratio + 1;
     const FrameBox2D g = frame_box_of(b, wider);
-    if (!g.representable) break;
+    if (!g.representable) {
+      // The doubling overshot the double range: the widest representable margin in between (bisection)
+      // is the last chance for points near the largest double.
+      double ok = margin_ratio, bad = std::min(wider, std::numeric_limits<double>::max());
+      for (int i = 0; i < 200 && ok < bad && std::nextafter(ok, bad) < bad; ++i) {
+        const double mid = ok / 2 + bad / 2;
+        (frame_box_of(b, mid).representable ? ok : bad) = mid;
+      }
+      if (contains_all(frame_box_of(b, ok))) margin_ratio = ok;
+      break;
+    }
     margin_ratio = wider;
     f = g;
   }
