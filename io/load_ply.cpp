@@ -161,6 +161,19 @@ PlyHeader read_ply_header(const std::string& path, const std::string& text) {
   return h;
 }
 
+// The name of a value in messages, "face 12 index 3", built only when a message needs it (reading
+// millions of values must not build millions of strings).
+struct ValueName {
+  const std::string& element;  // "vertex", "face", "element 'NAME'"
+  long long index;
+  const char* part = "";       // e.g. " index", " (list count)"
+  long long item = -1;         // with part " index": the item
+  std::string str() const {
+    return element + " " + std::to_string(index) + part + (item >= 0 ? " " + std::to_string(item) : "");
+  }
+  ValueName with(const char* p, long long i = -1) const { return {element, index, p, i}; }
+};
+
 // Reads the data section value by value (ASCII tokens or binary scalars), failing on truncation, on ASCII
 // integers outside their declared type, and on list counts larger than the bytes left can hold.
 struct PlyDataReader {
@@ -192,27 +205,27 @@ struct PlyDataReader {
     return tok;
   }
 
-  // Exact value of the next scalar of type t (every PLY scalar is exactly a double). `what` names it.
-  double scalar(PlyScalar t, const std::string& what) {
+  // Exact value of the next scalar of type t (every PLY scalar is exactly a double), named `name` in messages.
+  double scalar(PlyScalar t, const ValueName& name) {
     if (ascii()) {
       const std::string_view tok = token();
-      if (tok.empty()) fail_data("truncated data: " + what + " is missing");
+      if (tok.empty()) fail_data("truncated data: " + name.str() + " is missing");
       if (ply_is_float(t)) {
         auto v = parse_double(tok);
-        if (!v) fail_data(what + ": bad number '" + std::string(tok) + "'");
+        if (!v) fail_data(name.str() + ": bad number '" + std::string(tok) + "'");
         if (beyond_float32(*v)) replacements.push_back(float32_stand_in(text, tok, *v));
         return *v;
       }
       auto v = parse_int(tok);
-      if (!v) fail_data(what + ": bad integer '" + std::string(tok) + "'");
+      if (!v) fail_data(name.str() + ": bad integer '" + std::string(tok) + "'");
       const auto [lo, hi] = ply_range(t);
       if (*v < lo || *v > hi)
-        fail_data(what + ": value " + std::string(tok) + " does not fit its type " + ply_name(t) + " [" +
+        fail_data(name.str() + ": value " + std::string(tok) + " does not fit its type " + ply_name(t) + " [" +
                   std::to_string(lo) + ", " + std::to_string(hi) + "]");
       return static_cast<double>(*v);
     }
     const int n = ply_size(t);
-    if (left() < static_cast<std::size_t>(n)) fail_data("truncated data: " + what + " is missing");
+    if (left() < static_cast<std::size_t>(n)) fail_data("truncated data: " + name.str() + " is missing");
     unsigned char b[8];
     std::memcpy(b, text.data() + pos, n);
     pos += n;
@@ -233,54 +246,55 @@ struct PlyDataReader {
 
   // A vertex coordinate: ASCII floats by the coordinate rule of text formats (text_coordinate), other
   // values as scalar(); non-finite values fail.
-  double coordinate(PlyScalar t, const std::string& what) {
+  double coordinate(PlyScalar t, const ValueName& name) {
     if (ascii() && ply_is_float(t)) {
       const std::string_view tok = token();
-      if (tok.empty()) fail_data("truncated data: " + what + " is missing");
-      const double v = text_coordinate(path, what + ": ", tok);
-      if (beyond_float32(v)) replacements.push_back(float32_stand_in(text, tok, v));
-      return v;
+      if (tok.empty()) fail_data("truncated data: " + name.str() + " is missing");
+      const auto v = parse_double(tok);
+      if (!v || !std::isfinite(*v)) return text_coordinate(path, name.str() + ": ", tok);  // fails, with the message
+      if (beyond_float32(*v)) replacements.push_back(float32_stand_in(text, tok, *v));
+      return *v;
     }
-    const double v = scalar(t, what);
-    if (!std::isfinite(v)) fail(path, what + " has a non-finite coordinate");
+    const double v = scalar(t, name);
+    if (!std::isfinite(v)) fail(path, name.str() + " has a non-finite coordinate");
     return v;
   }
 
   // A list's item count, checked against the bytes left (an ASCII item takes at least 2 bytes but the last).
-  long long list_count(const PlyProperty& p, const std::string& what) {
-    const double n = scalar(p.count_type, what + " (list count)");
-    if (n < 0) fail_data(what + ": negative list count");
+  long long list_count(const PlyProperty& p, const ValueName& name) {
+    const double n = scalar(p.count_type, name.with(" (list count)"));
+    if (n < 0) fail_data(name.str() + ": negative list count");
     const long double need = ascii() ? 2.0L * n - 1 : static_cast<long double>(n) * ply_size(p.type);
     if (need > static_cast<long double>(left()))
-      fail_data(what + ": list count " + std::to_string(static_cast<long long>(n)) +
+      fail_data(name.str() + ": list count " + std::to_string(static_cast<long long>(n)) +
                 " is more than the rest of the file can hold");
     return static_cast<long long>(n);
   }
 
   // ASCII: called after each list item; remembers (once) the first list whose items run past the line
   // holding its count (legal, but the likely cause of a later error: a count larger than its list).
-  void note_list_item(const std::string& what, long count_line, long long n, long long& on_its_line) {
+  void note_list_item(const ValueName& name, long count_line, long long n, long long& on_its_line) {
     if (!ascii()) return;
     if (line == count_line) {
       ++on_its_line;
     } else if (hint.empty()) {
-      hint = what + " (line " + std::to_string(count_line) + ") has list count " + std::to_string(n) +
+      hint = name.str() + " (line " + std::to_string(count_line) + ") has list count " + std::to_string(n) +
              " but its line holds " + std::to_string(on_its_line) + " items";
     }
   }
 
   // Skips one property value (a list: its count, then that many items).
-  void skip(const PlyProperty& p, const std::string& what) {
+  void skip(const PlyProperty& p, const ValueName& name) {
     if (!p.is_list) {
-      scalar(p.type, what);
+      scalar(p.type, name);
       return;
     }
-    const long long n = list_count(p, what);
+    const long long n = list_count(p, name);
     const long count_line = line;
     long long on_line = 0;
     for (long long k = 0; k < n; ++k) {
-      scalar(p.type, what);
-      note_list_item(what, count_line, n, on_line);
+      scalar(p.type, name);
+      note_list_item(name, count_line, n, on_line);
     }
   }
 
@@ -328,6 +342,7 @@ RawMesh load_ply(const std::string& path, const std::string& text, bool altered)
   if (ply_is_float(index_list.type)) fail(path, "face property " + index_list.name + " must hold integers");
 
   PlyDataReader in{path, text, h.format, h.data_offset, h.data_line, {}, {}};
+  const std::string vertex_label = "vertex", face_label = "face";
   RawMesh m;
   for (const auto& e : h.elements) {
     in.check_fits(e);
@@ -335,7 +350,7 @@ RawMesh load_ply(const std::string& path, const std::string& text, bool altered)
     if (&e == vertex) {
       m.vertices.reserve(static_cast<std::size_t>(nv));
       for (long long i = 0; i < nv; ++i) {
-        const std::string what = "vertex " + std::to_string(i);
+        const ValueName what{vertex_label, i};
         Point3 p;
         for (std::size_t j = 0; j < vertex->props.size(); ++j) {
           const PlyProperty& prop = vertex->props[j];
@@ -351,7 +366,7 @@ RawMesh load_ply(const std::string& path, const std::string& text, bool altered)
     } else if (&e == face) {
       m.faces.reserve(static_cast<std::size_t>(nf));
       for (long long f = 0; f < nf; ++f) {
-        const std::string what = "face " + std::to_string(f);
+        const ValueName what{face_label, f};
         for (std::size_t j = 0; j < face->props.size(); ++j) {
           if (static_cast<int>(j) != indices) {
             in.skip(face->props[j], what);
@@ -363,10 +378,10 @@ RawMesh load_ply(const std::string& path, const std::string& text, bool altered)
           list.reserve(static_cast<std::size_t>(n));
           long long on_line = 0;
           for (long long k = 0; k < n; ++k) {
-            const double v = in.scalar(index_list.type, what + " index " + std::to_string(k));
+            const double v = in.scalar(index_list.type, what.with(" index", k));
             in.note_list_item(what, count_line, n, on_line);
             if (v < 0 || v >= static_cast<double>(nv))
-              in.fail_data(what + " refers to vertex " + std::to_string(static_cast<long long>(v)) +
+              in.fail_data(what.str() + " refers to vertex " + std::to_string(static_cast<long long>(v)) +
                            ", out of range [0, " + std::to_string(nv) + ")");
             list.push_back(static_cast<int>(v));
           }
@@ -374,8 +389,9 @@ RawMesh load_ply(const std::string& path, const std::string& text, bool altered)
         }
       }
     } else {
+      const std::string label = "element '" + e.name + "'";
       for (long long i = 0; i < e.count; ++i)
-        for (const auto& p : e.props) in.skip(p, "element '" + e.name + "' " + std::to_string(i));
+        for (const auto& p : e.props) in.skip(p, ValueName{label, i});
     }
   }
   if (in.ascii() && !in.token().empty())
@@ -384,15 +400,16 @@ RawMesh load_ply(const std::string& path, const std::string& text, bool altered)
 
   std::string copy;
   if (altered || !in.replacements.empty()) copy = with_replacements(text, in.replacements);
-  const OpenMeshResult om = copy.empty() ? read_with_openmesh(path) : read_with_openmesh(path, &copy, "ply");
+  const OpenMeshResult om = copy.empty() ? read_with_openmesh(path, nullptr, "", &m.faces)
+                                          : read_with_openmesh(path, &copy, "ply", &m.faces);
   if (static_cast<long long>(om.points.size()) != nv)
     fail(path, "OpenMesh read " + std::to_string(om.points.size()) + " vertices, the header declares " +
                    std::to_string(nv) + " (truncated?)");
-  if (static_cast<long long>(om.faces.size()) != nf)
-    fail(path, "OpenMesh read " + std::to_string(om.faces.size()) + " faces, the header declares " +
+  if (static_cast<long long>(om.face_count) != nf)
+    fail(path, "OpenMesh read " + std::to_string(om.face_count) + " faces, the header declares " +
                    std::to_string(nf) + " (truncated?)");
   check_same_points(path, m.vertices, om.points);
-  if (om.faces != m.faces) fail(path, "OpenMesh read different face lists than the file has");
+  if (!om.faces_match) fail(path, "OpenMesh read different face lists than the file has");
   return m;
 }
 

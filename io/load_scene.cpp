@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <array>
+#include <charconv>
 #include <cerrno>
 #include <cmath>
 #include <cstdint>
@@ -91,11 +92,10 @@ RawMesh load_obj(const std::string& path, const std::string& text, bool altered)
       return true;
     }
     if (t[0] != "v") return true;
-    const std::string where = "line " + std::to_string(line_no) + ": ";
-    if (t.size() < 4) fail(path, where + "vertex needs 3 coordinates");
+    if (t.size() < 4) fail(path, "line " + std::to_string(line_no) + ": vertex needs 3 coordinates");
     Point3 p;
     for (int k = 0; k < 3; ++k) {
-      p[k] = text_coordinate(path, where, t[k + 1]);
+      p[k] = text_coordinate(path, line_no, t[k + 1]);
       if (beyond_float32(p[k])) stand_ins.push_back(float32_stand_in(text, t[k + 1], p[k]));
     }
     m.vertices.push_back(p);
@@ -175,7 +175,8 @@ RawMesh load_obj(const std::string& path, const std::string& text, bool altered)
 // misreads '#' comments, and per-face colours derail it: it reads them as integers and then loses every
 // face after the first.)
 RawMesh load_off(const std::string& path, const std::string& text) {
-  check_text_encoding(path, text);
+  // Binary OFF ("OFF BINARY") holds NUL bytes legitimately; it is refused below, by name.
+  if (text.substr(0, text.find('\n')).find("BINARY") == std::string::npos) check_text_encoding(path, text);
   // Header: keyword, then nV nF nE (possibly on following lines), '#' comments allowed.
   std::vector<std::string_view> head;
   bool binary = false;
@@ -187,10 +188,13 @@ RawMesh load_off(const std::string& path, const std::string& text) {
       for (auto t : tokens(content)) {
         if (head.size() < 4) {
           head.push_back(t);
-          if (head.size() == 1 && t.find("BINARY") != std::string_view::npos) binary = true;
+          // "OFF BINARY" (the spec's form) or a keyword with BINARY in it
+          if ((head.size() == 1 && t.find("BINARY") != std::string_view::npos) || (head.size() == 2 && t == "BINARY"))
+            binary = true;
         }
+        if (binary) break;
       }
-      if (binary && head.size() >= 1) return false;  // binary body: OpenMesh only
+      if (binary) return false;  // binary body: refused below
       return true;
     }
     if (!tokens(content).empty()) lines.emplace_back(n, content);
@@ -215,10 +219,9 @@ RawMesh load_off(const std::string& path, const std::string& text) {
       fail(path, "truncated: header declares " + std::to_string(*nv) + " vertices, file has fewer lines");
     for (long long i = 0; i < *nv; ++i) {
       auto t = tokens(lines[i].second);
-      const std::string where = "line " + std::to_string(lines[i].first) + ": ";
-      if (t.size() < 3) fail(path, where + "vertex needs 3 coordinates");
+      if (t.size() < 3) fail(path, "line " + std::to_string(lines[i].first) + ": vertex needs 3 coordinates");
       Point3 p;
-      for (int k = 0; k < 3; ++k) p[k] = text_coordinate(path, where, t[k]);
+      for (int k = 0; k < 3; ++k) p[k] = text_coordinate(path, lines[i].first, t[k]);
       m.vertices.push_back(p);
     }
     if (static_cast<long long>(lines.size()) < *nv + *nf)
@@ -244,25 +247,29 @@ RawMesh load_off(const std::string& path, const std::string& text) {
     }
     // OpenMesh's copy (see above).
     std::string clean = "OFF\n" + std::string(head[1]) + " " + std::string(head[2]) + " " + std::string(head[3]) + "\n";
+    clean.reserve(text.size());
     for (long long i = 0; i < *nv; ++i) {
       const auto t = tokens(lines[i].second);
       for (int k = 0; k < 3; ++k) {
-        clean += k ? " " : "";
-        clean += beyond_float32(m.vertices[i][k]) ? float32_stand_in(text, t[k], m.vertices[i][k]).text : std::string(t[k]);
+        if (k) clean += ' ';
+        if (beyond_float32(m.vertices[i][k])) clean += float32_stand_in(text, t[k], m.vertices[i][k]).text;
+        else clean.append(t[k]);
       }
       clean += '\n';
     }
+    char digits[24];
+    const auto put = [&](long long v) { clean.append(digits, std::to_chars(digits, digits + sizeof digits, v).ptr); };
     for (const auto& face : faces) {
-      clean += std::to_string(face.size());
-      for (int v : face) clean += " " + std::to_string(v);
+      put(static_cast<long long>(face.size()));
+      for (int v : face) clean += ' ', put(v);
       clean += '\n';
     }
-    const OpenMeshResult om = read_with_openmesh(path, &clean, "off");
+    const OpenMeshResult om = read_with_openmesh(path, &clean, "off", &faces);
     check_same_points(path, m.vertices, om.points);
-    if (static_cast<long long>(om.faces.size()) != *nf)
-      fail(path, "OpenMesh read " + std::to_string(om.faces.size()) + " faces, the header declares " +
+    if (static_cast<long long>(om.face_count) != *nf)
+      fail(path, "OpenMesh read " + std::to_string(om.face_count) + " faces, the header declares " +
                      std::to_string(*nf));
-    if (om.faces != faces) fail(path, "OpenMesh read different face lists than the file has");
+    if (!om.faces_match) fail(path, "OpenMesh read different face lists than the file has");
     m.faces = std::move(faces);
   } else {
     // Its counts cannot be checked against the file size before OpenMesh allocates for them.
@@ -303,10 +310,9 @@ RawMesh load_stl(const std::string& path, const std::string& file_text) {
     for_each_line(text, [&](long n, std::string_view line) {
       auto t = tokens(line);
       if (t.empty() || t[0] != "vertex") return true;
-      const std::string where = "line " + std::to_string(n) + ": ";
-      if (t.size() < 4) fail(path, where + "vertex needs 3 coordinates");
+      if (t.size() < 4) fail(path, "line " + std::to_string(n) + ": vertex needs 3 coordinates");
       Point3 p;
-      for (int k = 0; k < 3; ++k) p[k] = text_coordinate(path, where, t[k + 1]);
+      for (int k = 0; k < 3; ++k) p[k] = text_coordinate(path, n, t[k + 1]);
       corners.push_back(p);
       return true;
     });

@@ -60,6 +60,11 @@ double text_coordinate(const std::string& path, const std::string& where, std::s
   fail(path, where + "non-finite coordinate '" + std::string(tok) + "' (beyond the range of doubles, about 1.8e308)");
 }
 
+double text_coordinate(const std::string& path, long line, std::string_view tok) {
+  if (const auto v = parse_double(tok); v && std::isfinite(*v)) return *v;
+  return text_coordinate(path, "line " + std::to_string(line) + ": ", tok);
+}
+
 bool beyond_float32(double v) { return std::isfinite(v) && std::fabs(v) > std::numeric_limits<float>::max(); }
 
 TokenReplacement float32_stand_in(std::string_view text, std::string_view tok, double v) {

@@ -55,6 +55,8 @@ void for_each_line(std::string_view text, F&& f) {
 // token that is not a number, "PATH: WHEREnon-finite coordinate 'TOK'" for NaN or infinity and for a decimal
 // beyond the largest double (about 1.8e308). `where` is a prefix such as "line 7: ".
 double text_coordinate(const std::string& path, const std::string& where, std::string_view tok);
+// The same for a token on line `line` (where = "line L: ", built only for a message).
+double text_coordinate(const std::string& path, long line, std::string_view tok);
 
 // OpenMesh parses coordinates as float32 and its stream parsing stops for good at a finite value beyond
 // float32's range. Our readers take the coordinates exactly and give OpenMesh (which only has to agree on

@@ -32,6 +32,11 @@ struct RecordingImporter : OpenMesh::IO::ImporterT<OmMesh> {
   std::vector<OpenMesh::Vec3f> points;       // in the reader's add order (= file order)
   std::vector<int> file_index;               // mesh handle idx -> file vertex index, -1 if none
   std::vector<std::vector<int>> faces;       // file vertex indices, -1 for a handle the file never made
+  // When set: faces are compared with these as they arrive instead of being stored.
+  const std::vector<std::vector<int>>* expected = nullptr;
+  std::size_t face_count = 0;
+  bool faces_match = true;
+  std::vector<int> scratch;
 
   OpenMesh::VertexHandle record(OpenMesh::VertexHandle h, const OpenMesh::Vec3f& p) {
     if (h.idx() >= 0) {
@@ -52,11 +57,13 @@ struct RecordingImporter : OpenMesh::IO::ImporterT<OmMesh> {
     Base::set_point(h, p);
   }
   OpenMesh::FaceHandle add_face(const VHandles& hs) override {
-    std::vector<int> f;
+    std::vector<int>& f = expected ? scratch : faces.emplace_back();
+    f.clear();
     f.reserve(hs.size());
     for (auto h : hs)
       f.push_back(h.idx() >= 0 && static_cast<size_t>(h.idx()) < file_index.size() ? file_index[h.idx()] : -1);
-    faces.push_back(std::move(f));
+    if (expected) faces_match = faces_match && face_count < expected->size() && (*expected)[face_count] == f;
+    ++face_count;
     return Base::add_face(hs);
   }
 };
@@ -70,9 +77,11 @@ struct QuietOpenMesh {
 
 }  // namespace
 
-OpenMeshResult read_with_openmesh(const std::string& path, const std::string* normalized, const std::string& ext) {
+OpenMeshResult read_with_openmesh(const std::string& path, const std::string* normalized, const std::string& ext,
+                                  const std::vector<std::vector<int>>* expected_faces) {
   OmMesh mesh;
   RecordingImporter importer(mesh);
+  importer.expected = expected_faces;
   OpenMesh::IO::Options opt;
   bool ok = false;
   try {
@@ -89,7 +98,8 @@ OpenMeshResult read_with_openmesh(const std::string& path, const std::string* no
     fail(path, std::string("OpenMesh failed: ") + e.what());
   }
   if (!ok) fail(path, "OpenMesh could not read it (malformed or truncated file)");
-  return {std::move(importer.points), std::move(importer.faces)};
+  const bool match = importer.faces_match && (!expected_faces || importer.face_count == expected_faces->size());
+  return {std::move(importer.points), std::move(importer.faces), importer.face_count, match};
 }
 
 void check_same_points(const std::string& path, const std::vector<Point3>& exact,

@@ -267,8 +267,11 @@ TEST(BadInput, TextEncodingsAreNamed) {
       EXPECT_NE(msg.find("is UTF-16 LE text"), std::string::npos) << msg;
     }
   }
-  const std::string msg = expect_input_error(write_file(dir.file("nul.obj"), std::string("v 0 0 0\n\0\0\x01\x02", 12) + "f 1 2 3\n"));
+  std::string msg = expect_input_error(write_file(dir.file("nul.obj"), std::string("v 0 0 0\n\0\0\x01\x02", 12) + "f 1 2 3\n"));
   EXPECT_NE(msg.find("contains NUL bytes"), std::string::npos) << msg;
+  // Binary OFF has NUL bytes of its own: it keeps its own message.
+  msg = expect_input_error(write_file(dir.file("bin.off"), std::string("OFF BINARY\n\0\0\0\3\0\0\0\1\0\0\0\0", 23)));
+  EXPECT_NE(msg.find("binary OFF is not supported"), std::string::npos) << msg;
 }
 
 // Fuzzed variants of valid files of every format (cut at many points, bytes flipped at fixed seeds, counts
