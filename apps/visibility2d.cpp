@@ -72,12 +72,16 @@ int run_segments(const Visibility2DOptions& o) {
   OutputFiles outputs({o.svg});  // fails now, not after the work, when the output cannot be created
   const Scene2D scene = load_scene2d(o.scene, o.slice);
   SegmentVisibility2D r;
-  if (o.method == "complex") {
-    const VisibilityComplex2D cx = visibility_complex(scene);
-    const ComplexWalkIndex2D index = complex_walk_index(scene, cx);
-    r = segment_visibility_in_complex(index, S[0], S[1], T[0], T[1]);
-  } else {
-    r = segment_visibility(scene, S[0], S[1], T[0], T[1]);
+  try {
+    if (o.method == "complex") {
+      const VisibilityComplex2D cx = visibility_complex(scene);
+      const ComplexWalkIndex2D index = complex_walk_index(scene, cx);
+      r = segment_visibility_in_complex(index, S[0], S[1], T[0], T[1]);
+    } else {
+      r = segment_visibility(scene, S[0], S[1], T[0], T[1]);
+    }
+  } catch (const Scene2DError& e) {  // the viewpoint frame (docs/theory.md §7, "Coordinate range")
+    throw InputError(o.scene + ": " + e.what());
   }
   ojson j;
   j["from_segment"] = {point_json(S[0]), point_json(S[1])};

@@ -11,7 +11,13 @@
 
 namespace exactvis::mesh_io {
 
-void fail(const std::string& path, const std::string& problem) { throw InputError(path + ": " + problem); }
+void fail(const std::string& path, const std::string& problem) {
+  // Problems quote file content: control bytes become '?' so the message stays one printable line.
+  std::string p = problem;
+  for (char& c : p)
+    if ((static_cast<unsigned char>(c) < 0x20) || c == 0x7f) c = '?';
+  throw InputError(path + ": " + p);
+}
 
 std::optional<double> parse_double(std::string_view tok) {
   if (!tok.empty() && tok.front() == '+') tok.remove_prefix(1);

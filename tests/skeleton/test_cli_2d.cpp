@@ -208,6 +208,16 @@ TEST(Cli2D, HugeCoordinatesAndMargins) {
     EXPECT_EQ(lines(r.err), 1) << args << ": " << r.err;
   }
   EXPECT_NE(d.run("aspect2d " + d.file("big1e308.json") + " --margin 1").err.find("largest double"), std::string::npos);
+  // Segment queries near the double range: both methods answer (the complex method's frame shrinks to
+  // margin 0 when margin 0.5 does not fit; any frame containing S and T gives the same answer).
+  const std::string b17 = d.write("b17.json", R"({"polygons": [[[0,0],[1.7e308,0],[0,1]]]})");
+  for (const char* seg : {"--from-segment -1,-1,-1,-2 --to-segment -3,-1,-3,-2",
+                          "--from-segment -1,0.5,-1,0.7 --to-segment 1e300,2,1e300,3"}) {
+    const CliRun a = d.run("visibility2d " + b17 + " " + seg), b = d.run("visibility2d " + b17 + " " + seg + " --method sweep");
+    ASSERT_EQ(a.status, 0) << seg << ": " << a.err;
+    ASSERT_EQ(b.status, 0) << seg << ": " << b.err;
+    EXPECT_EQ(nlohmann::json::parse(a.out)["visible"], nlohmann::json::parse(b.out)["visible"]) << seg;
+  }
   // The frame widens for far viewpoints (it stopped after 64 doublings: "outside the frame").
   for (const char* from : {"1e300,3", "-1.7e308,0.5"}) {
     const CliRun r = d.run("visibility2d " + tri + " --from " + from);
