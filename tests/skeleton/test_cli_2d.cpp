@@ -11,6 +11,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <sys/wait.h>
+#include <unistd.h>
 #include <vector>
 
 namespace {
@@ -22,7 +23,10 @@ struct CliRun {
 
 CliRun run(const std::string& args) {
   const auto dir = std::filesystem::temp_directory_path();
-  const std::string out = (dir / "exactvis_plane2d_cli.out").string(), err = (dir / "exactvis_plane2d_cli.err").string();
+  // Per process (ctest -j runs each test in its own process at the same time): no shared capture files.
+  const std::string tag = std::to_string(getpid());
+  const std::string out = (dir / ("exactvis_plane2d_cli." + tag + ".out")).string(),
+                    err = (dir / ("exactvis_plane2d_cli." + tag + ".err")).string();
   const int raw = std::system((std::string(EXACTVIS_BINARY) + " " + args + " >" + out + " 2>" + err).c_str());
   auto slurp = [](const std::string& p) {
     std::ifstream in(p);
@@ -30,11 +34,24 @@ CliRun run(const std::string& args) {
     s << in.rdbuf();
     return s.str();
   };
-  return {WEXITSTATUS(raw), slurp(out), slurp(err)};
+  CliRun r{WEXITSTATUS(raw), slurp(out), slurp(err)};
+  std::filesystem::remove(out);
+  std::filesystem::remove(err);
+  return r;
 }
 
+// Scene files written by write(), removed when the test process ends.
+struct WrittenFiles {
+  std::vector<std::string> paths;
+  ~WrittenFiles() {
+    std::error_code ec;
+    for (const auto& p : paths) std::filesystem::remove(p, ec);
+  }
+} written_files;
+
 std::string write(const std::string& name, const std::string& text) {
-  const auto path = (std::filesystem::temp_directory_path() / ("exactvis_plane2d_" + name)).string();
+  const auto path = (std::filesystem::temp_directory_path() / ("exactvis_plane2d_" + std::to_string(getpid()) + "_" + name)).string();
+  written_files.paths.push_back(path);
   std::ofstream(path) << text;
   return path;
 }
