@@ -6,6 +6,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
 #include <fstream>
 
 namespace exactvis {
@@ -30,13 +33,27 @@ std::vector<Point2> read_ring(const std::string& path, const nlohmann::json& r, 
 }  // namespace
 
 std::vector<PolygonInput2D> read_polygons2d_json(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) fail(path, "cannot open file");
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) fail(path, "no such file");
+  if (std::filesystem::is_directory(path, ec)) fail(path, "is a directory, not a 2D scene file");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) fail(path, std::string("cannot open (") + std::strerror(errno) + ")");
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) fail(path, "read error");
   nlohmann::json doc;
   try {
-    in >> doc;
-  } catch (const std::exception& e) {
-    fail(path, "not valid JSON");
+    // The whole file must be one JSON value: parse() refuses trailing characters (operator>> would stop
+    // after the first value and ignore the rest).
+    doc = nlohmann::json::parse(text.str());
+  } catch (const nlohmann::json::parse_error& e) {
+    // e.what(): "[json.exception.parse_error.101] parse error at line L, column C: ..."
+    std::string why = e.what();
+    const auto at = why.find("parse error");
+    why = at == std::string::npos ? why : why.substr(at + std::string("parse error").size());
+    for (char& c : why)
+      if (c == '\n' || c == '\r') c = ' ';
+    fail(path, "not valid JSON:" + why);
   }
   if (!doc.is_object() || !doc.contains("polygons") || !doc["polygons"].is_array())
     fail(path, "expected {\"polygons\": [...]}");

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <sstream>
 
@@ -11,6 +12,12 @@ namespace {
 std::string where(const Point2& p) {
   std::ostringstream s;
   s << "(" << p.ax << ", " << p.ay << ")";
+  return s.str();
+}
+
+std::string where_number(double v) {
+  std::ostringstream s;
+  s << v;
   return s.str();
 }
 
@@ -178,26 +185,71 @@ Scene2D make_scene2d(const std::vector<PolygonInput2D>& polygons) {
   return s;
 }
 
-Scene2D with_frame(const Scene2D& scene, double margin_ratio) {
-  Scene2D s = scene;
+namespace {
+
+// Bounding box of the vertices' interval enclosures ([0,1]^2 for an empty scene).
+struct VertexBox {
   double lo_x = 0, lo_y = 0, hi_x = 1, hi_y = 1;
-  if (!s.points.empty()) {
-    lo_x = hi_x = s.points[0].ax;
-    lo_y = hi_y = s.points[0].ay;
-    for (const Point2& p : s.points) {
-      lo_x = std::min(lo_x, p.ix.inf());
-      hi_x = std::max(hi_x, p.ix.sup());
-      lo_y = std::min(lo_y, p.iy.inf());
-      hi_y = std::max(hi_y, p.iy.sup());
-    }
+};
+
+VertexBox vertex_box(const Scene2D& s) {
+  VertexBox b;
+  if (s.points.empty()) return b;
+  b.lo_x = b.hi_x = s.points[0].ax;
+  b.lo_y = b.hi_y = s.points[0].ay;
+  for (const Point2& p : s.points) {
+    b.lo_x = std::min(b.lo_x, p.ix.inf());
+    b.hi_x = std::max(b.hi_x, p.ix.sup());
+    b.lo_y = std::min(b.lo_y, p.iy.inf());
+    b.hi_y = std::max(b.hi_y, p.iy.sup());
   }
-  const double m = std::max(1.0, margin_ratio * std::max(hi_x - lo_x, hi_y - lo_y));
-  lo_x = std::floor(lo_x - m);
-  lo_y = std::floor(lo_y - m);
-  hi_x = std::ceil(hi_x + m);
-  hi_y = std::ceil(hi_y + m);
+  return b;
+}
+
+// A frame corner below `lo` (outward = -1) or above `hi` (outward = +1): the integer floor/ceil of the
+// widened value, or the next double when rounding left it on the vertex box (huge coordinates, m = 1).
+double outward(double v, double m, int direction) {
+  const double inf = std::numeric_limits<double>::infinity();
+  const double c = direction < 0 ? std::floor(v - m) : std::ceil(v + m);
+  if (direction < 0 ? c < v : c > v) return c;
+  return std::nextafter(v, direction * inf);
+}
+
+FrameBox2D frame_box_of(const VertexBox& b, double margin_ratio) {
+  FrameBox2D f;
+  if (!(margin_ratio >= 0) || !std::isfinite(margin_ratio)) return f;
+  // Half sides first, so a scene spanning more than the largest double does not overflow before the margin
+  // is applied (halving and doubling are exact; without overflow this is margin * larger side, as before).
+  const double half = std::max(b.hi_x / 2 - b.lo_x / 2, b.hi_y / 2 - b.lo_y / 2);
+  const double m = std::max(1.0, margin_ratio == 0 ? 0.0 : 2 * (margin_ratio * half));
+  f.lo_x = outward(b.lo_x, m, -1);
+  f.lo_y = outward(b.lo_y, m, -1);
+  f.hi_x = outward(b.hi_x, m, +1);
+  f.hi_y = outward(b.hi_y, m, +1);
+  f.representable = std::isfinite(f.lo_x) && std::isfinite(f.lo_y) && std::isfinite(f.hi_x) && std::isfinite(f.hi_y);
+  return f;
+}
+
+bool box_contains(const FrameBox2D& f, const Point2& p) {
+  return Exact(f.lo_x) < p.x && p.x < Exact(f.hi_x) && Exact(f.lo_y) < p.y && p.y < Exact(f.hi_y);
+}
+
+}  // namespace
+
+FrameBox2D frame_box(const Scene2D& scene, double margin_ratio) {
+  return frame_box_of(vertex_box(scene), margin_ratio);
+}
+
+Scene2D with_frame(const Scene2D& scene, double margin_ratio) {
+  const FrameBox2D f = frame_box(scene, margin_ratio);
+  if (!(margin_ratio >= 0) || !std::isfinite(margin_ratio))
+    throw Scene2DError("frame margin must be a finite number >= 0");
+  if (!f.representable)
+    throw Scene2DError("the viewpoint frame (the scene's box widened by margin " + where_number(margin_ratio) +
+                       " times its size) reaches beyond the largest double (1.8e308); use a smaller margin");
+  Scene2D s = scene;
   // frame: obstacle outside, so the free inside is on the right: clockwise
-  const Point2 box[4] = {{lo_x, lo_y}, {lo_x, hi_y}, {hi_x, hi_y}, {hi_x, lo_y}};
+  const Point2 box[4] = {{f.lo_x, f.lo_y}, {f.lo_x, f.hi_y}, {f.hi_x, f.hi_y}, {f.hi_x, f.lo_y}};
   Ring2D rg;
   rg.first = s.num_vertices();
   rg.size = 4;
@@ -223,13 +275,31 @@ bool frame_contains(const Scene2D& framed, const Point2& p) {
 }
 
 Scene2D with_frame_around(const Scene2D& scene, const std::vector<Point2>& points, double margin_ratio) {
-  Scene2D framed = with_frame(scene, margin_ratio);
-  for (int k = 0; k < 64; ++k) {
-    if (std::all_of(points.begin(), points.end(), [&](const Point2& p) { return frame_contains(framed, p); })) break;
-    margin_ratio = 2 * margin_ratio + 1;
-    framed = with_frame(scene, margin_ratio);
+  const VertexBox b = vertex_box(scene);
+  FrameBox2D f = frame_box_of(b, margin_ratio);
+  const auto contains_all = [&](const FrameBox2D& box) {
+    return std::all_of(points.begin(), points.end(), [&](const Point2& p) { return box_contains(box, p); });
+  };
+  // Each widening more than doubles the margin, so this ends after at most ~1100 steps (then the margin
+  // overflows and the next frame is not representable).
+  while (f.representable && !contains_all(f)) {
+    const double wider = 2 * margin_ratio + 1;
+    const FrameBox2D g = frame_box_of(b, wider);
+    if (!g.representable) {
+      // The doubling overshot the double range: the widest representable margin in between (bisection)
+      // is the last chance for points near the largest double.
+      double ok = margin_ratio, bad = std::min(wider, std::numeric_limits<double>::max());
+      for (int i = 0; i < 200 && ok < bad && std::nextafter(ok, bad) < bad; ++i) {
+        const double mid = ok / 2 + bad / 2;
+        (frame_box_of(b, mid).representable ? ok : bad) = mid;
+      }
+      if (contains_all(frame_box_of(b, ok))) margin_ratio = ok;
+      break;
+    }
+    margin_ratio = wider;
+    f = g;
   }
-  return framed;
+  return with_frame(scene, margin_ratio);
 }
 
 bool on_boundary(const Scene2D& scene, const Point2& p) {

@@ -51,8 +51,19 @@ struct Scene2D {
 // consecutive edges overlap, a hole is not inside its outer ring, holes nest, or polygons overlap.
 Scene2D make_scene2d(const std::vector<PolygonInput2D>& polygons);
 
-// The scene plus a frame: an axis-parallel box (obstacle outside) around all vertices with a margin of
-// `margin_ratio` times the larger bounding-box side (at least 1). Coordinates are rounded outward to doubles.
+// The frame box of with_frame(scene, margin_ratio): the vertices' bounding box widened on every side by
+// m = max(1, margin_ratio * larger side), corners rounded outward to integers (to the next double when that
+// does not move them), so the box contains every vertex strictly. `representable` is false when a corner
+// would lie beyond the largest double (about 1.8e308), or margin_ratio is not a finite number >= 0: such a
+// frame cannot be built (docs/theory.md, section 7, "Coordinate range"). O(n).
+struct FrameBox2D {
+  double lo_x = 0, lo_y = 0, hi_x = 0, hi_y = 0;
+  bool representable = false;
+};
+FrameBox2D frame_box(const Scene2D& scene, double margin_ratio);
+
+// The scene plus a frame: the axis-parallel box frame_box(scene, margin_ratio) as a ring (obstacle outside).
+// Throws Scene2DError (one line) when that box is not representable.
 Scene2D with_frame(const Scene2D& scene, double margin_ratio = 0.5);
 
 // Exact tests of p against the ring pts[first .. first+size-1] (closed, any orientation): inside_ring by
@@ -63,8 +74,9 @@ bool on_ring(const std::vector<Point2>& pts, int first, int size, const Point2& 
 // True iff p lies strictly inside the frame box of `framed` (a scene made by with_frame). Exact.
 bool frame_contains(const Scene2D& framed, const Point2& p);
 
-// with_frame(scene, margin_ratio), the margin widened (doubled plus one, at most 64 times) until the frame
-// contains every point of `points` strictly; callers check frame_contains if the points may be absurdly far.
+// with_frame(scene, margin_ratio), the margin widened (doubled plus one, repeatedly) until the frame contains
+// every point of `points` strictly, or until the next widening would not be representable; callers check
+// frame_contains when the points may lie beyond every representable frame. Throws as with_frame.
 Scene2D with_frame_around(const Scene2D& scene, const std::vector<Point2>& points, double margin_ratio);
 
 // True iff point p lies in the interior of some object (not on a boundary, not in free space).
