@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <map>
 #include <stdexcept>
 #include <type_traits>
@@ -47,7 +48,11 @@ Exact power_of_two_below(const Exact& x) {
 class Builder {
  public:
   explicit Builder(const std::vector<ArrangementPlane>& planes) : P_(planes) {
-    for (const auto& p : P_) n_.push_back(enclose(p.normal)), c_.push_back(enclose(p.offset));
+    for (const auto& p : P_) {
+      n_.push_back(enclose(p.normal)), c_.push_back(enclose(p.offset));
+      nd_.push_back({CGAL::to_double(p.normal.x), CGAL::to_double(p.normal.y), CGAL::to_double(p.normal.z)});
+      cd_.push_back(CGAL::to_double(p.offset));
+    }
   }
 
   PlaneArrangement run() {
@@ -85,10 +90,24 @@ class Builder {
       else return NT(dot(P_[k].normal, w.exact));
     });
   }
-  std::string signs_at(const FilteredPoint& x) const {
+  // The sign vector at x; `zeros` (ascending) are planes known to hold x (by construction), not evaluated.
+  std::string signs_at(const FilteredPoint& x, const std::vector<int>& zeros = {}) const {
     std::string s(P_.size(), '0');
-    for (std::size_t k = 0; k < P_.size(); ++k) s[k] = sign_char(side(static_cast<int>(k), x));
+    std::size_t z = 0;
+    for (std::size_t k = 0; k < P_.size(); ++k) {
+      if (z < zeros.size() && zeros[z] == static_cast<int>(k)) {
+        ++z;
+        continue;
+      }
+      s[k] = sign_char(side(static_cast<int>(k), x));
+    }
     return s;
+  }
+  // Whether x has sign signs[k] on every plane where that is not zero (the zeros hold by construction).
+  bool has_nonzero_signs(const FilteredPoint& x, const std::string& signs) const {
+    for (std::size_t k = 0; k < P_.size(); ++k)
+      if (signs[k] != '0' && sign_char(side(static_cast<int>(k), x)) != signs[k]) return false;
+    return true;
   }
 
   // The cell with sign vector `signs`: existing, or new with the given sample and dimension.
@@ -136,7 +155,8 @@ class Builder {
           if (s == Sign::Zero) {
             if (side(k, fp) == Sign::Zero) line.planes.push_back(k);
           } else {
-            t.push_back((P_[k].offset - dot(P_[k].normal, p)) / dot(P_[k].normal, d));
+            const bool through_point = p.x == 0 && p.y == 0 && p.z == 0 && P_[k].offset == 0;  // central case
+            t.push_back(through_point ? Exact(0) : (P_[k].offset - dot(P_[k].normal, p)) / dot(P_[k].normal, d));
           }
         }
         std::sort(t.begin(), t.end());
@@ -171,7 +191,7 @@ class Builder {
       const auto add_edge = [&](const Vec3<Exact>& sample, std::vector<int> ends) {
         ArrangementCell c;
         c.dimension = 1;
-        c.signs = signs_at(FilteredPoint(sample));
+        c.signs = signs_at(FilteredPoint(sample), L.planes);
         c.sample = sample;
         c.facets = std::move(ends);
         if (!by_signs_.emplace(c.signs, static_cast<int>(A_.cells.size())).second)
@@ -191,8 +211,8 @@ class Builder {
   }
 
   // An exact step eps > 0 (a power of two) such that s + eps' w, 0 < eps' <= eps, keeps the sign of every
-  // plane on which s is not zero.
-  Exact step(const ArrangementCell& from, const Vec3<Exact>& w) const {
+  // plane on which s is not zero (the exact bound: half the smallest ratio |n_k . s - c_k| / |n_k . w|).
+  Exact exact_step(const ArrangementCell& from, const Vec3<Exact>& w) const {
     bool bounded = false;
     Exact best(0);
     for (std::size_t k = 0; k < P_.size(); ++k) {
@@ -203,6 +223,34 @@ class Builder {
       if (!bounded || r < best) best = r, bounded = true;
     }
     return bounded ? power_of_two_below(best / 2) : Exact(1);
+  }
+
+  // The sample of the cell with sign vector `signs` reached from `from` along w: a step proposed in
+  // doubles (a quarter of the smallest ratio, rounded down to a power of two) and accepted only if the
+  // moved point has exactly the sign vector `signs` (filtered exact signs); else the exact step.
+  Vec3<Exact> moved_sample(const ArrangementCell& from, const Vec3<Exact>& w, const std::string& signs) const {
+    const double sx = CGAL::to_double(from.sample.x), sy = CGAL::to_double(from.sample.y),
+                 sz = CGAL::to_double(from.sample.z);
+    const double wx = CGAL::to_double(w.x), wy = CGAL::to_double(w.y), wz = CGAL::to_double(w.z);
+    double best = std::numeric_limits<double>::infinity();
+    for (std::size_t k = 0; k < P_.size(); ++k) {
+      if (from.signs[k] == '0') continue;
+      const auto& n = nd_[k];
+      const double nw = std::abs(n[0] * wx + n[1] * wy + n[2] * wz);
+      if (nw == 0) continue;
+      best = std::min(best, std::abs(n[0] * sx + n[1] * sy + n[2] * sz - cd_[k]) / nw);
+    }
+    const auto at = [&](const Exact& eps) {
+      return from.sample + Vec3<Exact>(eps * w.x, eps * w.y, eps * w.z);
+    };
+    if (best > 0 && std::isfinite(best) && best > 1e-280) {
+      int e = 0;
+      std::frexp(best / 4, &e);
+      const Vec3<Exact> p = at(Exact(std::ldexp(1.0, e - 1)));
+      // The planes where `signs` is zero hold `from` and contain w (w is built in them), so hold p.
+      if (has_nonzero_signs(FilteredPoint(p), signs)) return p;
+    }
+    return at(exact_step(from, w));
   }
 
   void faces_around_edge(int e) {
@@ -216,9 +264,7 @@ class Builder {
           if (j != k) s[j] = sign_char(sgn * to_int(along(j, fw)));
         bool fresh = false;
         const int f = cell(s, 2, [&] {
-          const Vec3<Exact> w = sgn > 0 ? w0 : -w0;
-          const Exact eps = step(A_.cells[e], w);
-          return A_.cells[e].sample + Vec3<Exact>(eps * w.x, eps * w.y, eps * w.z);
+          return moved_sample(A_.cells[e], sgn > 0 ? w0 : -w0, s);
         }, &fresh);
         if (fresh) face_plane_.push_back(k);
         A_.cells[f].facets.push_back(e);
@@ -233,9 +279,7 @@ class Builder {
       s[k] = sign_char(sgn);
       bool fresh = false;
       const int v = cell(s, 3, [&] {
-        const Vec3<Exact> w = sgn > 0 ? P_[k].normal : -P_[k].normal;
-        const Exact eps = step(A_.cells[f], w);
-        return A_.cells[f].sample + Vec3<Exact>(eps * w.x, eps * w.y, eps * w.z);
+        return moved_sample(A_.cells[f], sgn > 0 ? P_[k].normal : -P_[k].normal, s);
       }, &fresh);
       A_.cells[v].facets.push_back(f);
     }
@@ -244,6 +288,8 @@ class Builder {
   const std::vector<ArrangementPlane>& P_;
   std::vector<Vec3<Interval>> n_;
   std::vector<Interval> c_;
+  std::vector<std::array<double, 3>> nd_;  // doubles: only to propose steps
+  std::vector<double> cd_;
   PlaneArrangement A_;
   std::unordered_map<std::string, int> by_signs_;
   std::vector<Line> lines_;
