@@ -60,17 +60,18 @@ ojson graph_json(const AspectGraph3& g) {
 }
 
 std::string summary(const AspectGraph3& g, std::size_t planes) {
-  const bool ortho = g.view == ViewModel::Orthographic;
+  const bool ortho = g.view == ViewModel::Orthographic, plane = g.view == ViewModel::Plane;
   std::array<std::size_t, 4> per_dim{0, 0, 0, 0};
   for (const auto& r : g.regions) ++per_dim[r.dimension];
-  std::string s = std::string(ortho ? "orthographic" : "perspective") + " aspect graph of a convex model with " +
-                  std::to_string(planes) + " face planes: " + std::to_string(g.regions.size()) + " regions (";
-  for (int d = ortho ? 2 : 3; d >= 0; --d)
+  std::string s = std::string(ortho ? "orthographic" : (plane ? "plane" : "perspective")) +
+                  " aspect graph of a convex model with " + std::to_string(planes) + " face planes: " +
+                  std::to_string(g.regions.size()) + " regions (";
+  for (int d = ortho || plane ? 2 : 3; d >= 0; --d)
     s += std::to_string(per_dim[d]) + " of dimension " + std::to_string(d) + (d ? ", " : "");
   s += "), " + std::to_string(g.adjacency.size()) + " adjacencies; ";
   s += ortho ? "sphere cells " + std::to_string(g.cells[0]) + " vertices, " + std::to_string(g.cells[1]) + " arcs, " +
                    std::to_string(g.cells[2]) + " faces"
-             : "cells outside the model " + std::to_string(g.cells[0]) + " vertices, " + std::to_string(g.cells[1]) +
+             : std::string(plane ? "cells of the plane" : "cells") + " outside the model " + std::to_string(g.cells[0]) + " vertices, " + std::to_string(g.cells[1]) +
                    " edges, " + std::to_string(g.cells[2]) + " faces, " + std::to_string(g.cells[3]) + " volumes";
   return s;
 }
@@ -78,11 +79,12 @@ std::string summary(const AspectGraph3& g, std::size_t planes) {
 int run(const AspectOptions& o) {
   const int views = int(o.orthographic) + int(o.perspective) + int(!o.plane.empty());
   if (views != 1) throw std::invalid_argument("--orthographic, --perspective or --plane z=H: give exactly one");
+  Exact height(0);
   if (!o.plane.empty()) {
     const std::string p = app::trim(o.plane);
-    if (p.size() < 3 || p.compare(0, 2, "z=") != 0) throw std::invalid_argument("--plane: '" + o.plane + "' is not z=H");
-    app::parse_exact(p.substr(2), "--plane");
-    throw std::invalid_argument("--plane: the partition of a plane of viewpoints is not implemented yet");
+    if (p.size() < 3 || p.compare(0, 2, "z=") != 0)
+      throw std::invalid_argument("--plane: '" + o.plane + "' is not z=H (H a number or num/den)");
+    height = app::parse_exact(p.substr(2), "--plane");
   }
   if (!o.vtp.empty()) throw std::invalid_argument("--vtp: not implemented yet for aspect");
   if (!o.png.empty()) throw std::invalid_argument("--png: not implemented yet for aspect");
@@ -95,11 +97,16 @@ int run(const AspectOptions& o) {
       throw InputError(label + ": not a closed convex model (" + model.problem +
                        "); --perspective takes convex models only: use --plane z=H for perspective viewpoints on a "
                        "plane");
+    if (!o.plane.empty())
+      throw InputError(label + ": not a closed convex model (" + model.problem +
+                       "); --plane z=H on non-convex models is not implemented yet");
     throw InputError(label + ": not a closed convex model (" + model.problem +
                      "); the orthographic aspect graph of non-convex models is not implemented yet");
   }
   const AspectGraph3 g =
-      convex_aspect_graph(scene, model, o.orthographic ? ViewModel::Orthographic : ViewModel::Perspective);
+      !o.plane.empty()
+          ? convex_aspect_graph_on_plane(scene, model, Vec3<Exact>(0, 0, 1), height)
+          : convex_aspect_graph(scene, model, o.orthographic ? ViewModel::Orthographic : ViewModel::Perspective);
   const ojson j = graph_json(g);
   if (!o.output.empty())
     outputs.write(o.output, [&](const std::string& temp) {
@@ -122,7 +129,7 @@ const exactvis::app::CommandRegistration registration(
       auto* ort = sub->add_flag("--orthographic", opts->orthographic, "viewpoints are directions (the viewing sphere)");
       auto* per = sub->add_flag("--perspective", opts->perspective,
                                 "viewpoints are points outside the model (convex models only)");
-      auto* pla = sub->add_option("--plane", opts->plane, "viewpoints on the plane z=H (not implemented yet)");
+      auto* pla = sub->add_option("--plane", opts->plane, "viewpoints on the plane z=H (H a number or num/den; convex models)");
       ort->excludes(per)->excludes(pla);
       per->excludes(pla);
       sub->add_flag("--json", opts->json, "print regions, aspects, adjacency and counts as JSON on stdout");

@@ -13,14 +13,14 @@
 namespace exactvis {
 
 // Orthographic: viewpoints are directions d (the viewer at infinity along +d). Perspective: points outside
-// the closed model.
-enum class ViewModel { Orthographic, Perspective };
+// the closed model. Plane: perspective viewpoints restricted to a given plane (regions of the plane).
+enum class ViewModel { Orthographic, Perspective, Plane };
 
 struct AspectRegion3 {
-  int dimension = 0;                  // orthographic 0 .. 2 (on the sphere), perspective 0 .. 3
+  int dimension = 0;                  // orthographic 0 .. 2 (on the sphere), perspective 0 .. 3, plane 0 .. 2
   std::vector<std::int64_t> aspect;   // stable ids of the triangles seen with positive measure, ascending
   // A viewpoint of the region, exact: orthographic a direction scaled so that its largest |component| is 1,
-  // perspective a point. Taken in a cell of the region's largest dimension.
+  // perspective a point (on the plane for ViewModel::Plane). Taken in a cell of the region's largest dimension.
   Vec3<Exact> sample;
 };
 

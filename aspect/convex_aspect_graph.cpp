@@ -9,7 +9,19 @@
 
 namespace exactvis {
 
-AspectGraph3 convex_aspect_graph(const Scene& scene, const ConvexModel& model, ViewModel view) {
+namespace {
+
+// n scaled so that its first largest-|.| component is +1, and the offset with it.
+std::pair<Vec3<Exact>, Exact> unoriented(const Vec3<Exact>& n, const Exact& c) {
+  int a = 0;
+  for (int i = 1; i < 3; ++i)
+    if (CGAL::abs(n[i]) > CGAL::abs(n[a])) a = i;
+  const Exact s = n[a];
+  return {{n.x / s, n.y / s, n.z / s}, c / s};
+}
+
+// view_plane: for ViewModel::Plane, the viewpoint plane.
+AspectGraph3 build(const ConvexModel& model, ViewModel view, const ArrangementPlane* view_plane) {
   if (!model.convex) throw std::invalid_argument("convex_aspect_graph: the model is not convex");
   const int m = static_cast<int>(model.planes.size());
   const bool ortho = view == ViewModel::Orthographic;
@@ -31,6 +43,14 @@ AspectGraph3 convex_aspect_graph(const Scene& scene, const ConvexModel& model, V
     }
   } else {
     for (int k = 0; k < m; ++k) planes.push_back({model.planes[k].normal, model.planes[k].offset}), g[k] = k;
+  }
+  // The viewpoint plane: a face plane, or one more arrangement plane.
+  int on = -1;
+  if (view_plane) {
+    const auto key = unoriented(view_plane->normal, view_plane->offset);
+    for (int k = 0; k < m && on < 0; ++k)
+      if (unoriented(planes[k].normal, planes[k].offset) == key) on = k;
+    if (on < 0) on = static_cast<int>(planes.size()), planes.push_back(*view_plane);
   }
   const PlaneArrangement arr = plane_arrangement(planes);
 
@@ -55,7 +75,7 @@ AspectGraph3 convex_aspect_graph(const Scene& scene, const ConvexModel& model, V
     cells[c].facets = a.facets;
     // Orthographic: every direction sees a face (the outward normals span R^3 positively); the origin is not
     // a direction. Perspective: a point sees a face iff it is outside the closed model.
-    keep[c] = seen && cells[c].dimension >= 0;
+    keep[c] = seen && cells[c].dimension >= 0 && (on < 0 || a.signs[on] == '0');
     auto [it, fresh] = aspect_ids.emplace(key, static_cast<int>(aspect_keys.size()));
     if (fresh) aspect_keys.push_back(key);
     cells[c].aspect = it->second;
@@ -99,8 +119,24 @@ AspectGraph3 convex_aspect_graph(const Scene& scene, const ConvexModel& model, V
     }
     out.adjacency.push_back(std::move(a));
   }
-  (void)scene;
   return out;
+}
+
+}  // namespace
+
+AspectGraph3 convex_aspect_graph(const Scene& scene, const ConvexModel& model, ViewModel view) {
+  if (view == ViewModel::Plane) throw std::invalid_argument("convex_aspect_graph: use convex_aspect_graph_on_plane");
+  (void)scene;
+  return build(model, view, nullptr);
+}
+
+AspectGraph3 convex_aspect_graph_on_plane(const Scene& scene, const ConvexModel& model, const Vec3<Exact>& normal,
+                                          const Exact& offset) {
+  if (normal.x == 0 && normal.y == 0 && normal.z == 0)
+    throw std::invalid_argument("convex_aspect_graph_on_plane: zero normal");
+  (void)scene;
+  const ArrangementPlane p{normal, offset};
+  return build(model, ViewModel::Plane, &p);
 }
 
 }  // namespace exactvis

@@ -7,7 +7,9 @@
 //   orthographic: the arrangement of the great circles orthogonal to the face normals = the traces on the
 //     unit sphere of the central plane arrangement {n . d = 0} (one plane per normal up to sign),
 //   perspective: the arrangement of the face planes, restricted to the cells outside the model (at least
-//     one positive sign).
+//     one positive sign),
+//   on a plane of viewpoints: the same arrangement with the viewpoint plane added, restricted to the cells in
+//     that plane (their traces: the partition of the plane by the lines where face planes cross it).
 // Both are computed by aspect/plane_arrangement_3.hpp; regions by aspect/aspect_regions.hpp. Along any
 // chain of cells lower in upper's closure the set of positive planes only grows, so adjacent regions'
 // aspects are nested and differ exactly by the faces of the planes the lower cell lies on and the upper
@@ -18,9 +20,15 @@
 
 namespace exactvis {
 
-// Input: the scene and its convex model (model.convex must be true). Output: the aspect graph.
-// Cost: the arrangement, O(m^2) cells orthographic and O(m^3) perspective for m face planes, each with
-// O(m) exact sign evaluations.
+// Input: the scene and its convex model (model.convex must be true); view Orthographic or Perspective.
+// Output: the aspect graph. Cost: the arrangement, O(m^2) cells orthographic and O(m^3) perspective for m
+// face planes, each with O(m) filtered exact sign evaluations.
 AspectGraph3 convex_aspect_graph(const Scene& scene, const ConvexModel& model, ViewModel view);
+
+// The same for perspective viewpoints on the plane {normal . x = offset} (normal != 0), view = Plane:
+// regions of the plane outside the model, of dimension 0 .. 2. Cost: O(m^3) arrangement cells (the
+// arrangement of the face planes and the viewpoint plane), of which O(m^2) lie in the plane.
+AspectGraph3 convex_aspect_graph_on_plane(const Scene& scene, const ConvexModel& model, const Vec3<Exact>& normal,
+                                          const Exact& offset);
 
 }  // namespace exactvis

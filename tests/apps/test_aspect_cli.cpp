@@ -65,6 +65,16 @@ TEST(AspectCli, CubeJsonHasTheIssueShape) {
   }
 }
 
+TEST(AspectCli, PlaneOfViewpoints) {
+  const fs::path d = test_dir("plane");
+  write_cube(d / "cube.obj");
+  const auto r = run_exactvis(d, "aspect " + (d / "cube.obj").string() + " --plane z=2 --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["counts"]["regions"], 9);
+  for (const auto& reg : j["regions"]) EXPECT_EQ(reg["sample"][2], 2);
+}
+
 TEST(AspectCli, OutputFileHoldsTheSameJson) {
   const fs::path d = test_dir("output");
   write_cube(d / "cube.obj");
@@ -91,7 +101,7 @@ TEST(AspectCli, BadOptions) {
   const std::string c = (d / "cube.obj").string();
   EXPECT_EQ(run_exactvis(d, "aspect " + c).status, 1);  // no view given
   EXPECT_NE(run_exactvis(d, "aspect " + c + " --orthographic --perspective").status, 0);
-  const auto p = run_exactvis(d, "aspect " + c + " --plane y=3");
+  const auto p = run_exactvis(d, "aspect " + c + " --plane y=3");  // only z=H
   EXPECT_EQ(p.status, 1);
   EXPECT_NE(p.err.find("--plane"), std::string::npos);
   const auto m = run_exactvis(d, "aspect " + (d / "missing.obj").string() + " --orthographic");

@@ -147,4 +147,29 @@ TEST(ConvexAspectGraph, RandomPolytopesPerspectiveAgreeWithTheOracle) {
   }
 }
 
+// Viewpoints on a plane: the traces of the face planes are lines of the plane; in a simple line arrangement
+// every lower cell joins a face, so regions = faces of the line arrangement outside the model's section.
+TEST(ConvexAspectGraph, PlanesOfViewpoints) {
+  struct Case {
+    Scene s;
+    Exact h;
+    std::size_t regions;
+  };
+  const std::vector<Case> cases{{cube(), Exact(0), 8},        // 3 x 3 grid minus the section
+                                {cube(), Exact(2), 9},        // above the top: the whole grid
+                                {cube(), Exact(1), 8},        // in the top face's plane
+                                {tetrahedron(), Exact(1) / 4, 6},  // 3 lines (z = 0 is parallel): 7 - 1
+                                {tetrahedron(), Exact(2), 7}};
+  for (const auto& c : cases) {
+    const ConvexModel m = convex_model(c.s);
+    const AspectGraph3 g = convex_aspect_graph_on_plane(c.s, m, Vec3<Exact>(0, 0, 1), c.h);
+    EXPECT_EQ(g.regions.size(), c.regions) << "z = " << c.h;
+    for (const auto& r : g.regions) {
+      EXPECT_EQ(r.sample.z, c.h);
+      EXPECT_LE(r.dimension, 2);
+    }
+    check_against_oracle(c.s, g);
+  }
+}
+
 }  // namespace
