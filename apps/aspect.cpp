@@ -4,11 +4,14 @@
 #include "apps/command_registry.hpp"
 #include "aspect/convex_aspect_graph.hpp"
 #include "aspect/convex_model.hpp"
+#include "aspect/partition_picture.hpp"
 #include "io/atomic_file.hpp"
 #include "io/load_scene.hpp"
+#include "io/write_vtp.hpp"
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <fstream>
 #include <iostream>
 
@@ -86,9 +89,11 @@ int run(const AspectOptions& o) {
       throw std::invalid_argument("--plane: '" + o.plane + "' is not z=H (H a number or num/den)");
     height = app::parse_exact(p.substr(2), "--plane");
   }
-  if (!o.vtp.empty()) throw std::invalid_argument("--vtp: not implemented yet for aspect");
+  if (!o.vtp.empty() && o.perspective)
+    throw std::invalid_argument("--vtp: pictures of the perspective partition of space are not implemented; use "
+                                "--orthographic (the viewing sphere) or --plane z=H");
   if (!o.png.empty()) throw std::invalid_argument("--png: not implemented yet for aspect");
-  OutputFiles outputs({o.output});
+  OutputFiles outputs({o.output, o.vtp});
   const Scene scene = load_scenes(o.scenes);
   const std::string label = scene_label(o.scenes);
   const ConvexModel model = convex_model(scene);
@@ -114,6 +119,22 @@ int run(const AspectOptions& o) {
       out << j.dump(1) << "\n";
       return static_cast<bool>(out);
     });
+  if (!o.vtp.empty()) {
+    PartitionPicture pic;
+    if (o.orthographic) {
+      pic = sphere_picture(model, g, 6);
+    } else {
+      // The model's box widened by its size on each side.
+      const Box3 b = bounding_box(scene);
+      const double w = std::max(b.hi.x - b.lo.x, b.hi.y - b.lo.y);
+      pic = plane_picture(model, g, CGAL::to_double(height), b.lo.x - w, b.lo.y - w, b.hi.x + w, b.hi.y + w, 240);
+    }
+    outputs.write(o.vtp, [&](const std::string& temp) {
+      write_surface_with_lines_vtp(temp, pic.points, pic.triangles, pic.triangle_region, pic.curves,
+                                   std::vector<std::int64_t>(pic.curves.size(), -1), "region");
+      return true;
+    });
+  }
   outputs.commit();
   if (o.json) std::cout << j.dump(1) << "\n";
   else std::cout << summary(g, model.planes.size()) << "\n";
@@ -134,7 +155,8 @@ const exactvis::app::CommandRegistration registration(
       per->excludes(pla);
       sub->add_flag("--json", opts->json, "print regions, aspects, adjacency and counts as JSON on stdout");
       sub->add_option("-o,--output", opts->output, "write the JSON to this file");
-      sub->add_option("--vtp", opts->vtp, "write the partition as VTK PolyData (not implemented yet)");
+      sub->add_option("--vtp", opts->vtp, "write the partition as VTK PolyData: the viewing sphere (or the plane) coloured by region (cell array "
+                    "\"region\"), with the boundary curves (region -1)");
       sub->add_option("--png", opts->png, "render the partition and views (not implemented yet)");
       sub->add_flag("-q,--quiet", opts->quiet, "no progress bar on stderr");
       return [opts] { return run(*opts); };

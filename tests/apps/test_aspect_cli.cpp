@@ -75,6 +75,19 @@ TEST(AspectCli, PlaneOfViewpoints) {
   for (const auto& reg : j["regions"]) EXPECT_EQ(reg["sample"][2], 2);
 }
 
+TEST(AspectCli, VtpPictures) {
+  const fs::path d = test_dir("vtp");
+  write_cube(d / "cube.obj");
+  const std::string c = (d / "cube.obj").string();
+  EXPECT_EQ(run_exactvis(d, "aspect " + c + " --orthographic --vtp " + (d / "s.vtp").string()).status, 0);
+  EXPECT_GT(fs::file_size(d / "s.vtp"), 1000u);
+  EXPECT_EQ(run_exactvis(d, "aspect " + c + " --plane z=0 --vtp " + (d / "p.vtp").string()).status, 0);
+  EXPECT_GT(fs::file_size(d / "p.vtp"), 1000u);
+  const auto r = run_exactvis(d, "aspect " + c + " --perspective --vtp " + (d / "q.vtp").string());
+  EXPECT_EQ(r.status, 1);
+  EXPECT_FALSE(fs::exists(d / "q.vtp"));
+}
+
 TEST(AspectCli, OutputFileHoldsTheSameJson) {
   const fs::path d = test_dir("output");
   write_cube(d / "cube.obj");
