@@ -7,11 +7,13 @@
 #include "aspect/partition_picture.hpp"
 #include "io/atomic_file.hpp"
 #include "io/load_scene.hpp"
+#include "io/render_png.hpp"
 #include "io/write_vtp.hpp"
 
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <iostream>
 
@@ -79,6 +81,61 @@ std::string summary(const AspectGraph3& g, std::size_t planes) {
   return s;
 }
 
+Point3 approx(const Vec3<Exact>& v) { return {CGAL::to_double(v.x), CGAL::to_double(v.y), CGAL::to_double(v.z)}; }
+
+// The pictures of --png: the partition (sphere or plane; none for perspective space) and the model as seen
+// from the samples of up to three regions of the largest dimension (first, middle, last).
+std::vector<PngPanel> png_panels(const Scene& scene, const ConvexModel& model, const AspectGraph3& g, double h) {
+  std::vector<PngPanel> panels;
+  const Box3 b = bounding_box(scene);
+  const Point3 centre{(b.lo.x + b.hi.x) / 2, (b.lo.y + b.hi.y) / 2, (b.lo.z + b.hi.z) / 2};
+  const double size = std::max({b.hi.x - b.lo.x, b.hi.y - b.lo.y, b.hi.z - b.lo.z});
+  const auto up_for = [](const Point3& d) {
+    return std::abs(d.z) > 0.9 * std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z) ? Point3{0, 1, 0} : Point3{0, 0, 1};
+  };
+  if (g.view == ViewModel::Orthographic) {
+    const PartitionPicture pic = sphere_picture(model, g, 5);
+    PngPanel p{pic.points, pic.triangles, pic.triangle_region, pic.curves, {0, 0, 0}, {1, 0.8, 0.6}, true, {0, 0, 1}};
+    panels.push_back(std::move(p));
+  } else if (g.view == ViewModel::Plane) {
+    const double w = std::max(b.hi.x - b.lo.x, b.hi.y - b.lo.y);
+    const PartitionPicture pic = plane_picture(model, g, h, b.lo.x - w, b.lo.y - w, b.hi.x + w, b.hi.y + w, 120);
+    panels.push_back({pic.points, pic.triangles, pic.triangle_region, pic.curves, {centre.x, centre.y, h},
+                      {centre.x, centre.y, h + size}, true, {0, 1, 0}});
+  }
+  std::vector<int> top;
+  for (std::size_t r = 0; r < g.regions.size(); ++r)
+    if (g.regions[r].dimension == g.regions.front().dimension) top.push_back(static_cast<int>(r));
+  std::vector<int> chosen{top.front()};
+  if (top.size() > 2) chosen.push_back(top[top.size() / 2]);
+  if (top.size() > 1) chosen.push_back(top.back());
+  for (int r : chosen) {
+    PngPanel p;
+    p.points = scene.vertices;
+    for (std::size_t i = 0; i < scene.triangles.size(); ++i) {
+      p.triangles.push_back(scene.triangles[i].v);
+      p.values.push_back(model.plane_of[i]);
+    }
+    const Point3 s = approx(g.regions[r].sample);
+    p.focal = centre;
+    if (g.view == ViewModel::Orthographic) {
+      p.eye = {centre.x + s.x, centre.y + s.y, centre.z + s.z};
+      p.up = up_for(s);
+    } else {
+      p.eye = s;
+      p.orthographic = false;
+      // Wide enough to hold the model's bounding sphere, seen from the sample (which may be close to it).
+      const double dist = std::sqrt((s.x - centre.x) * (s.x - centre.x) + (s.y - centre.y) * (s.y - centre.y) +
+                                    (s.z - centre.z) * (s.z - centre.z));
+      const double radius = 0.87 * size;
+      p.view_angle = std::min(160.0, 1.2 * 2 * std::asin(std::min(1.0, radius / std::max(dist, 1e-300))) * 180 / M_PI);
+      p.up = up_for({s.x - centre.x, s.y - centre.y, s.z - centre.z});
+    }
+    panels.push_back(std::move(p));
+  }
+  return panels;
+}
+
 int run(const AspectOptions& o) {
   const int views = int(o.orthographic) + int(o.perspective) + int(!o.plane.empty());
   if (views != 1) throw std::invalid_argument("--orthographic, --perspective or --plane z=H: give exactly one");
@@ -92,8 +149,7 @@ int run(const AspectOptions& o) {
   if (!o.vtp.empty() && o.perspective)
     throw std::invalid_argument("--vtp: pictures of the perspective partition of space are not implemented; use "
                                 "--orthographic (the viewing sphere) or --plane z=H");
-  if (!o.png.empty()) throw std::invalid_argument("--png: not implemented yet for aspect");
-  OutputFiles outputs({o.output, o.vtp});
+  OutputFiles outputs({o.output, o.vtp, o.png});
   const Scene scene = load_scenes(o.scenes);
   const std::string label = scene_label(o.scenes);
   const ConvexModel model = convex_model(scene);
@@ -135,6 +191,10 @@ int run(const AspectOptions& o) {
       return true;
     });
   }
+  if (!o.png.empty()) {
+    const std::vector<PngPanel> panels = png_panels(scene, model, g, CGAL::to_double(height));
+    outputs.write(o.png, [&](const std::string& temp) { return render_png(temp, panels, 480), true; });
+  }
   outputs.commit();
   if (o.json) std::cout << j.dump(1) << "\n";
   else std::cout << summary(g, model.planes.size()) << "\n";
@@ -157,7 +217,8 @@ const exactvis::app::CommandRegistration registration(
       sub->add_option("-o,--output", opts->output, "write the JSON to this file");
       sub->add_option("--vtp", opts->vtp, "write the partition as VTK PolyData: the viewing sphere (or the plane) coloured by region (cell array "
                     "\"region\"), with the boundary curves (region -1)");
-      sub->add_option("--png", opts->png, "render the partition and views (not implemented yet)");
+      sub->add_option("--png", opts->png, "render a PNG: the partition (sphere or plane) and the model seen from a few regions "
+                    "(VTK offscreen; starts a private Xvfb when DISPLAY is unset)");
       sub->add_flag("-q,--quiet", opts->quiet, "no progress bar on stderr");
       return [opts] { return run(*opts); };
     });

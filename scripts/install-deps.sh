@@ -10,6 +10,7 @@ packages=(
   nlohmann-json3-dev libcli11-dev libgtest-dev
   libzip-dev          # reading Quake 3 .pk3 archives (io/zip_archive)
   assimp-testmodels   # broken model files the bad-input tests use
+  xvfb libgl1-mesa-dri  # offscreen PNG (aspect --png): VTK renders through GLX, Xvfb + Mesa when no display
 )
 
 missing=()

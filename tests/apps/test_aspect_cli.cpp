@@ -88,6 +88,18 @@ TEST(AspectCli, VtpPictures) {
   EXPECT_FALSE(fs::exists(d / "q.vtp"));
 }
 
+// --png renders offscreen (a private Xvfb when DISPLAY is unset): a PNG file appears.
+TEST(AspectCli, PngPicture) {
+  const fs::path d = test_dir("png");
+  write_cube(d / "cube.obj");
+  const auto r = run_exactvis(d, "aspect " + (d / "cube.obj").string() + " --orthographic -q --png " +
+                                     (d / "a.png").string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::string png = cli_test::slurp((d / "a.png").string());
+  ASSERT_GT(png.size(), 1000u);
+  EXPECT_EQ(png.substr(1, 3), "PNG");
+}
+
 TEST(AspectCli, OutputFileHoldsTheSameJson) {
   const fs::path d = test_dir("output");
   write_cube(d / "cube.obj");
