@@ -164,10 +164,13 @@ int run(const AspectOptions& o) {
     throw InputError(label + ": not a closed convex model (" + model.problem +
                      "); the orthographic aspect graph of non-convex models is not implemented yet");
   }
-  const AspectGraph3 g =
-      !o.plane.empty()
-          ? convex_aspect_graph_on_plane(scene, model, Vec3<Exact>(0, 0, 1), height)
-          : convex_aspect_graph(scene, model, o.orthographic ? ViewModel::Orthographic : ViewModel::Perspective);
+  const AspectGraph3 g = [&] {
+    app::FractionProgress bar("aspect: arrangement", app::progress_wanted(o.quiet));
+    return !o.plane.empty() ? convex_aspect_graph_on_plane(scene, model, Vec3<Exact>(0, 0, 1), height, bar.callback())
+                            : convex_aspect_graph(scene, model,
+                                                  o.orthographic ? ViewModel::Orthographic : ViewModel::Perspective,
+                                                  bar.callback());
+  }();
   const ojson j = graph_json(g);
   if (!o.output.empty())
     outputs.write(o.output, [&](const std::string& temp) {

@@ -21,7 +21,8 @@ std::pair<Vec3<Exact>, Exact> unoriented(const Vec3<Exact>& n, const Exact& c) {
 }
 
 // view_plane: for ViewModel::Plane, the viewpoint plane.
-AspectGraph3 build(const ConvexModel& model, ViewModel view, const ArrangementPlane* view_plane) {
+AspectGraph3 build(const ConvexModel& model, ViewModel view, const ArrangementPlane* view_plane,
+                   void (*progress)(double)) {
   if (!model.convex) throw std::invalid_argument("convex_aspect_graph: the model is not convex");
   const int m = static_cast<int>(model.planes.size());
   const bool ortho = view == ViewModel::Orthographic;
@@ -52,7 +53,7 @@ AspectGraph3 build(const ConvexModel& model, ViewModel view, const ArrangementPl
       if (unoriented(planes[k].normal, planes[k].offset) == key) on = k;
     if (on < 0) on = static_cast<int>(planes.size()), planes.push_back(*view_plane);
   }
-  const PlaneArrangement arr = plane_arrangement(planes);
+  const PlaneArrangement arr = plane_arrangement(planes, progress);
 
   // Model-plane sign of a cell: '+', '0' or '-'.
   const auto model_sign = [&](const ArrangementCell& c, int k) {
@@ -124,19 +125,20 @@ AspectGraph3 build(const ConvexModel& model, ViewModel view, const ArrangementPl
 
 }  // namespace
 
-AspectGraph3 convex_aspect_graph(const Scene& scene, const ConvexModel& model, ViewModel view) {
+AspectGraph3 convex_aspect_graph(const Scene& scene, const ConvexModel& model, ViewModel view,
+                                 void (*progress)(double)) {
   if (view == ViewModel::Plane) throw std::invalid_argument("convex_aspect_graph: use convex_aspect_graph_on_plane");
   (void)scene;
-  return build(model, view, nullptr);
+  return build(model, view, nullptr, progress);
 }
 
 AspectGraph3 convex_aspect_graph_on_plane(const Scene& scene, const ConvexModel& model, const Vec3<Exact>& normal,
-                                          const Exact& offset) {
+                                          const Exact& offset, void (*progress)(double)) {
   if (normal.x == 0 && normal.y == 0 && normal.z == 0)
     throw std::invalid_argument("convex_aspect_graph_on_plane: zero normal");
   (void)scene;
   const ArrangementPlane p{normal, offset};
-  return build(model, ViewModel::Plane, &p);
+  return build(model, ViewModel::Plane, &p, progress);
 }
 
 }  // namespace exactvis

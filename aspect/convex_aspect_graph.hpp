@@ -23,12 +23,14 @@ namespace exactvis {
 // Input: the scene and its convex model (model.convex must be true); view Orthographic or Perspective.
 // Output: the aspect graph. Cost: the arrangement, O(m^2) cells orthographic and O(m^3) perspective for m
 // face planes, each with O(m) filtered exact sign evaluations.
-AspectGraph3 convex_aspect_graph(const Scene& scene, const ConvexModel& model, ViewModel view);
+// `progress` (optional) receives the fraction done of the arrangement, the bulk of the work.
+AspectGraph3 convex_aspect_graph(const Scene& scene, const ConvexModel& model, ViewModel view,
+                                 void (*progress)(double) = nullptr);
 
 // The same for perspective viewpoints on the plane {normal . x = offset} (normal != 0), view = Plane:
 // regions of the plane outside the model, of dimension 0 .. 2. Cost: O(m^3) arrangement cells (the
 // arrangement of the face planes and the viewpoint plane), of which O(m^2) lie in the plane.
 AspectGraph3 convex_aspect_graph_on_plane(const Scene& scene, const ConvexModel& model, const Vec3<Exact>& normal,
-                                          const Exact& offset);
+                                          const Exact& offset, void (*progress)(double) = nullptr);
 
 }  // namespace exactvis

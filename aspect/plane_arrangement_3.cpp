@@ -47,7 +47,7 @@ Exact power_of_two_below(const Exact& x) {
 
 class Builder {
  public:
-  explicit Builder(const std::vector<ArrangementPlane>& planes) : P_(planes) {
+  Builder(const std::vector<ArrangementPlane>& planes, void (*progress)(double)) : P_(planes), progress_(progress) {
     for (const auto& p : P_) {
       n_.push_back(enclose(p.normal)), c_.push_back(enclose(p.offset));
       nd_.push_back({CGAL::to_double(p.normal.x), CGAL::to_double(p.normal.y), CGAL::to_double(p.normal.z)});
@@ -59,11 +59,18 @@ class Builder {
     build_lines();
     const int first_face = static_cast<int>(A_.cells.size());
     // 2-faces from edges (the edge list is complete here), then 3-cells from 2-faces.
-    for (int e = A_.vertices; e < first_face; ++e) faces_around_edge(e);
+    for (int e = A_.vertices; e < first_face; ++e) {
+      if (progress_ && (e & 1023) == 0) progress_(0.2 + 0.3 * (e - A_.vertices) / std::max(1, first_face - A_.vertices));
+      faces_around_edge(e);
+    }
     const int first_volume = static_cast<int>(A_.cells.size());
     A_.edges = first_face - A_.vertices;
     A_.faces = first_volume - first_face;
-    for (int f = first_face; f < first_volume; ++f) volumes_around_face(f);
+    for (int f = first_face; f < first_volume; ++f) {
+      if (progress_ && (f & 1023) == 0) progress_(0.5 + 0.5 * (f - first_face) / std::max(1, first_volume - first_face));
+      volumes_around_face(f);
+    }
+    if (progress_) progress_(1);
     A_.volumes = static_cast<int>(A_.cells.size()) - first_volume;
     return std::move(A_);
   }
@@ -131,6 +138,7 @@ class Builder {
     std::vector<std::vector<Exact>> crossings;  // per line: sorted distinct parameters
     for (int i = 0; i < m; ++i)
       for (int j = i + 1; j < m; ++j) {
+        if (progress_ && j == i + 1) progress_(0.2 * (1 - double(m - i) * (m - i) / (double(m) * m)));
         Vec3<Exact> d = cross(P_[i].normal, P_[j].normal);
         if (d.x == 0 && d.y == 0 && d.z == 0) continue;
         int a = 0;
@@ -286,6 +294,7 @@ class Builder {
   }
 
   const std::vector<ArrangementPlane>& P_;
+  void (*progress_)(double);
   std::vector<Vec3<Interval>> n_;
   std::vector<Interval> c_;
   std::vector<std::array<double, 3>> nd_;  // doubles: only to propose steps
@@ -299,7 +308,7 @@ class Builder {
 
 }  // namespace
 
-PlaneArrangement plane_arrangement(const std::vector<ArrangementPlane>& planes) {
+PlaneArrangement plane_arrangement(const std::vector<ArrangementPlane>& planes, void (*progress)(double)) {
   // The normals must span R^3: some three have a non-zero triple product.
   bool spans = false;
   for (std::size_t i = 0; i < planes.size() && !spans; ++i)
@@ -309,7 +318,7 @@ PlaneArrangement plane_arrangement(const std::vector<ArrangementPlane>& planes) 
       for (std::size_t k = j + 1; k < planes.size() && !spans; ++k) spans = dot(d, planes[k].normal) != 0;
     }
   if (!spans) throw std::invalid_argument("plane_arrangement: the plane normals do not span R^3");
-  return Builder(planes).run();
+  return Builder(planes, progress).run();
 }
 
 }  // namespace exactvis

@@ -41,8 +41,8 @@ struct PlaneArrangement {
 };
 
 // Input: distinct planes (no two with the same point set) whose normals span R^3 (else
-// std::invalid_argument). Output: all cells. Cost: O(m^2) lines with O(m) crossings each, then O(m) exact
+// std::invalid_argument); optional progress callback (fraction done, 0 .. 1). Output: all cells. Cost: O(m^2) lines with O(m) crossings each, then O(m) exact
 // (interval-filtered) sign evaluations per cell found, for m planes; memory O(m) per cell.
-PlaneArrangement plane_arrangement(const std::vector<ArrangementPlane>& planes);
+PlaneArrangement plane_arrangement(const std::vector<ArrangementPlane>& planes, void (*progress)(double) = nullptr);
 
 }  // namespace exactvis
