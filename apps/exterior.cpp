@@ -4,6 +4,7 @@
 // instead; `--compare sampled` runs both and reports where the sampler is wrong.
 #include "apps/cli_util.hpp"
 #include "apps/command_registry.hpp"
+#include "io/atomic_file.hpp"
 #include "io/json_number.hpp"
 #include "io/load_scene.hpp"
 #include "io/write_mesh.hpp"
@@ -103,6 +104,7 @@ int run_exterior(const ExteriorCliOptions& o) {
   const int threads = app::check_thread_count(o.threads, "--threads");
 
   const Scene scene = load_scenes(o.models);
+  OutputFiles outputs({o.output, o.vtp});  // checked before the work; all written or none
   const TriangleIndex index(scene);
   const FloatRayCaster caster(scene);
   const std::size_t n = scene.triangles.size();
@@ -181,9 +183,19 @@ int run_exterior(const ExteriorCliOptions& o) {
       if (exact && keep[i])
         segs.push_back(display_segment(scene.triangles[i].id, *exact->triangles[i].witness, exact->enclosing_box));
     }
-    write_visibility_vtp(o.vtp, scene, state, segs);
+    outputs.write(o.vtp, [&](const std::string& temp) {
+      write_visibility_vtp(temp, scene, state, segs);
+      return true;
+    });
   }
-  if (!o.output.empty()) write_scene_mesh(o.output, reduced_scene(scene, keep));
+  if (!o.output.empty()) {
+    const Scene reduced = reduced_scene(scene, keep);
+    outputs.write(o.output, [&](const std::string& temp) {
+      write_scene_mesh(temp, reduced);
+      return true;
+    });
+  }
+  outputs.commit();
 
   const std::size_t kept = static_cast<std::size_t>(std::count(keep.begin(), keep.end(), true));
   if (o.json) {
