@@ -33,7 +33,7 @@ struct ExteriorCliOptions {
   std::string vtp;
   std::string method = "exact";
   std::string compare;
-  int rays = 32;
+  int rays = 4096;
   int samples = 48;
   int views = 256;
   int resolution = 256;
@@ -233,14 +233,14 @@ const exactvis::app::CommandRegistration registration("exterior", 110, [](CLI::A
       ->capture_default_str();
   sub->add_option("--compare", o->compare,
                   "sampled: also run the sampler and report the triangles it gets wrong against the exact answer");
-  sub->add_option("--rays", o->rays, "Embree rays per triangle proposing witnesses (exact method)")
+  sub->add_option("--rays", o->rays, "Exact method: Embree rays per triangle at most that propose witnesses (each re-checked exactly)")
       ->capture_default_str();
   sub->add_option("--samples", o->samples, "Random segments per pair before each exact from-region query")
       ->capture_default_str();
   sub->add_option("--views", o->views, "Sampled: view directions on the sphere")->capture_default_str();
   sub->add_option("--resolution", o->resolution, "Sampled: rays per side of each view's image")
       ->capture_default_str();
-  sub->add_option("--mc-rays", o->mc_rays, "Sampled: Monte Carlo rays from random outside points in addition")
+  sub->add_option("--mc-rays", o->mc_rays, "Sampled: rays from points of each triangle the views missed, over the whole sphere (0: none)")
       ->capture_default_str();
   sub->add_option("--seed", o->seed, "Seed of the proposals and samplers (exact answers do not depend on it)")
       ->capture_default_str();

@@ -25,6 +25,8 @@ glm::vec3 to_float(const RationalPoint3& p) {
 }
 
 // A per-triangle generator: the same proposals whatever the thread that runs the triangle.
+constexpr int kFirstRound = 32;  // proposals before the enclosure test
+
 std::uint64_t mix(std::uint64_t seed, std::uint64_t i) {
   std::uint64_t z = seed + 0x9e3779b97f4a7c15ULL * (i + 1);
   z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
@@ -94,13 +96,15 @@ ExteriorTriangle ExteriorClassifier::classify(std::int64_t t, VisibilityStats* s
     return out;
   };
 
-  // Stage 1: Embree proposals, each re-checked exactly (a valid witness proves positive measure by itself).
-  if (caster_ != nullptr && options_.rays > 0) {
-    std::mt19937_64 rng(mix(options_.seed, static_cast<std::uint64_t>(t)));
-    const Vec3<Exact> n = cross(tri[1] - tri[0], tri[2] - tri[0]);
-    const RationalPoint3 c = centroid(poly);
-    const std::int64_t ignore[1] = {t};
-    for (int k = 0; k < options_.rays; ++k) {
+  // Stage 1: Embree proposals, each re-checked exactly (a valid witness proves positive measure by itself):
+  // a first round of kFirstRound rays, the rest after the enclosure test (for triangles in deep pockets).
+  std::mt19937_64 rng(mix(options_.seed, static_cast<std::uint64_t>(t)));
+  const Vec3<Exact> n = cross(tri[1] - tri[0], tri[2] - tri[0]);
+  const RationalPoint3 c = centroid(poly);
+  const std::int64_t ignore[1] = {t};
+  auto propose = [&](int from, int to) -> std::optional<ExteriorWitness> {
+    if (caster_ == nullptr) return std::nullopt;
+    for (int k = from; k < to; ++k) {
       ExteriorWitness w;
       if (k < 2) {
         w.q = c;
@@ -114,11 +118,13 @@ ExteriorTriangle ExteriorClassifier::classify(std::int64_t t, VisibilityStats* s
       if (counts) ++counts->proposals_cast;
       if (caster_->occluded(o, d, 0.0f, std::numeric_limits<float>::infinity(), ignore)) continue;
       if (counts) ++counts->proposals_checked;
-      if (check_exterior_witness(scene_, index_, scene_box_, t, w) == ExteriorWitnessCheck::Valid)
-        return accept(w, ExteriorStage::Proposal);
+      if (check_exterior_witness(scene_, index_, scene_box_, t, w) == ExteriorWitnessCheck::Valid) return w;
       if (counts) ++counts->proposals_rejected;
     }
-  }
+    return std::nullopt;
+  };
+  const int first_round = std::min(options_.rays, kFirstRound);
+  if (auto w = propose(0, first_round)) return accept(*w, ExteriorStage::Proposal);
 
   // Stage 2: a closed shell around T (every ray from T meets it).
   if (shells_) {
@@ -129,6 +135,8 @@ ExteriorTriangle ExteriorClassifier::classify(std::int64_t t, VisibilityStats* s
       return out;
     }
   }
+
+  if (auto w = propose(first_round, options_.rays)) return accept(*w, ExteriorStage::Proposal);
 
   // Stage 3 (Theorem 5.6.1): T is exterior visible iff it is visible from some face of the enclosing box.
   for (int axis = 0; axis < 3; ++axis)

@@ -6,7 +6,8 @@
 //   1. proposals: Embree rays from points of T (centroid along both normals first, then random points and
 //      directions) that Embree sees escape are re-checked exactly (check_exterior_witness): a valid one is
 //      the witness (it proves positive measure by itself, Lemma 5.6.2). Triangles on the convex hull are
-//      accepted here by their first or second ray (Corollary 5.6.3).
+//      accepted here by their first or second ray (Corollary 5.6.3). A first round of 32 rays runs before
+//      stage 2, the remaining ones (up to ExteriorOptions::rays) after it.
 //   2. enclosure: a closed shell of the scene around T (region/exterior_enclosure.hpp) proves T hidden.
 //   3. the exact from-region query (region/from_region_visibility.hpp) of T from each face of a box strictly
 //      enclosing the scene (Theorem 5.6.1): visible with a witness segment, which becomes the escaping ray,
@@ -29,7 +30,8 @@
 namespace exactvis::region {
 
 struct ExteriorOptions {
-  int rays = 32;               // Embree proposals per triangle (stage 1); 0 skips the stage
+  int rays = 4096;             // Embree proposals per triangle at most (stage 1: the first 32 before stage 2,
+                               // the rest after it); 0 skips the stage
   bool use_enclosure = true;   // stage 2
   VisibilityOptions query;     // stage 3 (samples, seed, witness rounding of the from-region query)
   std::uint64_t seed = 1;      // proposals (answers do not depend on it; witnesses may)
