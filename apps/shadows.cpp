@@ -6,6 +6,7 @@
 #include "events/eee_events.hpp"
 #include "io/atomic_file.hpp"
 #include "io/load_scene.hpp"
+#include "io/render_png.hpp"
 #include "io/write_shadow_mesh.hpp"
 #include "shadows/shadow_mesh.hpp"
 
@@ -117,8 +118,7 @@ std::vector<std::int64_t> parse_receivers(const exactvis::Scene& scene, const st
 }
 
 int run_shadows(const ShadowsCliOptions& o) {
-  if (!o.png.empty()) throw std::invalid_argument("--png: not implemented yet (write -o mesh.vtp and render it)");
-  exactvis::OutputFiles outputs({o.vtp, o.ply});
+  exactvis::OutputFiles outputs({o.vtp, o.ply, o.png});
   exactvis::Scene scene = exactvis::load_scenes({o.scene});
   exactvis::shadows::ShadowOptions opt;
   std::set<int> light;
@@ -131,12 +131,16 @@ int run_shadows(const ShadowsCliOptions& o) {
   if (opt.receivers.empty() && light.size() == scene.triangles.size())
     throw std::invalid_argument(o.scene + ": no receiver triangles (every triangle is part of the light)");
   opt.progress = exactvis::app::progress_wanted(o.no_progress);
-  opt.vertex_irradiance = !o.vtp.empty() || !o.ply.empty();
+  opt.vertex_irradiance = !o.vtp.empty() || !o.ply.empty() || !o.png.empty();
   const exactvis::shadows::ShadowResult res = exactvis::shadows::compute_shadows(scene, opt);
   if (!o.vtp.empty())
     outputs.write(o.vtp, [&](const std::string& tmp) { return exactvis::write_shadow_mesh_vtp(tmp, scene, res); });
   if (!o.ply.empty())
     outputs.write(o.ply, [&](const std::string& tmp) { return exactvis::write_shadow_mesh_ply(tmp, scene, res); });
+  if (!o.png.empty())
+    outputs.write(o.png, [&](const std::string& tmp) {
+      return exactvis::render_shadows_png(tmp, scene, res, opt.light);
+    });
   outputs.commit();
 
   std::uint64_t n_ev = 0, n_eee = 0, n_d0 = 0, n_faces = 0, n_umbra = 0, n_pen = 0, n_lit = 0;
@@ -211,7 +215,7 @@ const exactvis::app::CommandRegistration registration("shadows", 120, [](CLI::Ap
       ->capture_default_str();
   sub->add_option("-o,--vtp", opts->vtp, "Write the conforming mesh (.vtp: irradiance per vertex, class per cell)");
   sub->add_option("--ply", opts->ply, "Write the conforming mesh as ASCII .ply");
-  sub->add_option("--png", opts->png, "Render the lit scene to a PNG (not implemented yet)");
+  sub->add_option("--png", opts->png, "Render the lit scene to a PNG (VTK offscreen; starts Xvfb when DISPLAY is unset)");
   sub->add_flag("--json", opts->json, "Machine-readable JSON on stdout");
   sub->add_flag("-q,--no-progress", opts->no_progress, "No progress bar on stderr");
   return [opts]() { return run_shadows(*opts); };

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 
@@ -110,6 +111,25 @@ TEST(ShadowsCli, BadInputGivesOneLineErrorsAndNoOutputFiles) {
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
     EXPECT_FALSE(fs::exists(vtp)) << c.args;
   }
+}
+
+}  // namespace
+
+namespace {
+
+TEST(ShadowsCli, PngIsRenderedHeadless) {
+  const fs::path d = test_dir("png");
+  write(d / "s.obj", kTextbook);
+  // No DISPLAY: the renderer starts (and stops) its own Xvfb.
+  unsetenv("DISPLAY");
+  const auto r = cli_test::run_exactvis(d, "shadows " + (d / "s.obj").string() + " --light lamp -q --png " +
+                                               (d / "s.png").string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  std::ifstream in(d / "s.png", std::ios::binary);
+  char sig[8] = {};
+  in.read(sig, 8);
+  EXPECT_EQ(std::string(sig + 1, 3), "PNG");
+  EXPECT_GT(fs::file_size(d / "s.png"), 1000u);
 }
 
 }  // namespace
