@@ -1,5 +1,7 @@
 #include "region/ray_witness.hpp"
 
+#include "kernel/segment_triangle_intersection.hpp"
+
 #include <glm/vec3.hpp>
 
 #include <algorithm>
@@ -36,11 +38,17 @@ std::vector<std::int64_t> segment_candidates(const TriangleIndex& index, const R
   return out;
 }
 
-bool is_cell_witness(const PvsContext& context, const RationalBox3& cell, std::int64_t target, const Witness& w) {
-  if (!in_closed_box(w.p, cell)) return false;
+bool is_robust_cell_witness(const PvsContext& context, const RationalBox3& cell, std::int64_t target,
+                            const Witness& w) {
+  for (int k = 0; k < 3; ++k)
+    if (!(cell.lo[k] < w.p[k] && w.p[k] < cell.hi[k])) return false;
   if (!in_triangle_relative_interior(w.q, triangle_points(context.scene(), target))) return false;
-  const auto cands = segment_candidates(context.index(), w.p, w.q, context.diagonal() / 32);
-  return segment_is_free(context.scene(), cands, w.p, w.q, target);
+  for (const std::int64_t o : segment_candidates(context.index(), w.p, w.q, context.diagonal() / 32)) {
+    if (o == target) continue;
+    const auto t = triangle_points(context.scene(), o);
+    if (segment_meets_closed_triangle(w.p, w.q, t[0], t[1], t[2])) return false;
+  }
+  return true;
 }
 
 std::optional<Witness> ray_witness(const PvsContext& context, const RationalBox3& cell, const Box3& cell_approx,
@@ -64,9 +72,9 @@ std::optional<Witness> ray_witness(const PvsContext& context, const RationalBox3
     if (context.rays().occluded(origin, dir, 0.0f, 1.0f, ignore)) continue;
     // Embree saw a free ray: re-check the exact segment (p is the double sample, q the exact weighted point).
     const Witness w{to_rational(pd), weighted_point(tri, weights)};
-    if (!is_cell_witness(context, cell, target, w)) continue;
+    if (!is_robust_cell_witness(context, cell, target, w)) continue;
     const Witness rounded{w.p, nearest_doubles(w.q)};
-    if (!(rounded.q == w.q) && is_cell_witness(context, cell, target, rounded)) return rounded;
+    if (!(rounded.q == w.q) && is_robust_cell_witness(context, cell, target, rounded)) return rounded;
     return w;
   }
   return std::nullopt;

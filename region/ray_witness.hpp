@@ -18,13 +18,16 @@ namespace exactvis::region {
 std::vector<std::int64_t> segment_candidates(const TriangleIndex& index, const RationalPoint3& p,
                                              const RationalPoint3& q, double piece_length);
 
-// The exact witness check of from-cell visibility: p in the closed cell, q in the relative interior of
-// triangle `target`, and the open segment (p, q) meets no other closed scene triangle. Exact predicates only.
-bool is_cell_witness(const PvsContext& context, const RationalBox3& cell, std::int64_t target, const Witness& w);
+// The exact acceptance test of a proposed witness (docs/theory.md §5.6): p in the open cell, q in the
+// relative interior of triangle `target`, and the closed segment [p, q] meets no other closed scene triangle.
+// Then every segment near (p, q) is free too (the occluders are closed and at positive distance), so T is
+// visible with positive measure; (p, q) is in particular a witness of §5.1. Exact predicates only.
+bool is_robust_cell_witness(const PvsContext& context, const RationalBox3& cell, std::int64_t target,
+                            const Witness& w);
 
 // Up to `rays` Embree rays from random points of the cell to random points of relint(target) (exact
 // barycentric points, positive weights); the first ray Embree reports unblocked whose segment passes
-// is_cell_witness is returned, with its endpoints rounded to doubles when the rounded segment passes too.
+// is_robust_cell_witness is returned, with its endpoints rounded to doubles when the rounded segment passes too.
 // std::nullopt proves nothing (the caller then runs the exact query). `cell_approx` is the cell in doubles
 // (any nearby box: samples outside the exact cell are skipped). Deterministic for a given rng state.
 std::optional<Witness> ray_witness(const PvsContext& context, const RationalBox3& cell, const Box3& cell_approx,
