@@ -7,7 +7,7 @@
 #include "aspect/partition_picture.hpp"
 #include "io/atomic_file.hpp"
 #include "io/load_scene.hpp"
-#include "io/render_png.hpp"
+#include "io/render_partition_png.hpp"
 #include "io/write_vtp.hpp"
 
 #include <nlohmann/json.hpp>
@@ -196,7 +196,7 @@ int run(const AspectOptions& o) {
   }
   if (!o.png.empty()) {
     const std::vector<PngPanel> panels = png_panels(scene, model, g, CGAL::to_double(height));
-    outputs.write(o.png, [&](const std::string& temp) { return render_png(temp, panels, 480), true; });
+    outputs.write(o.png, [&](const std::string& temp) { return render_panels_png(temp, panels, 480), true; });
   }
   outputs.commit();
   if (o.json) std::cout << j.dump(1) << "\n";

@@ -7,119 +7,168 @@
 #include <vtkActor.h>
 #include <vtkCamera.h>
 #include <vtkCellArray.h>
-#include <vtkCellData.h>
+#include <vtkDoubleArray.h>
+#include <vtkLookupTable.h>
 #include <vtkNew.h>
 #include <vtkPNGWriter.h>
+#include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkProperty.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
-#include <vtkUnsignedCharArray.h>
 #include <vtkWindowToImageFilter.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <set>
+#include <string>
+
 
 namespace exactvis {
-
 namespace {
 
-// A well-spread palette: hues by the golden angle, alternating lightness.
-std::array<unsigned char, 3> colour(std::int64_t v) {
-  if (v < 0) return {170, 170, 170};
-  const double h = std::fmod(v * 0.618033988749895, 1.0) * 6, l = v % 2 ? 0.55 : 0.75, s = 0.65;
-  const double c = (1 - std::abs(2 * l - 1)) * s, x = c * (1 - std::abs(std::fmod(h, 2) - 1)), m = l - c / 2;
-  double r = 0, g = 0, b = 0;
-  const int k = static_cast<int>(h);
-  if (k == 0) r = c, g = x;
-  else if (k == 1) r = x, g = c;
-  else if (k == 2) g = c, b = x;
-  else if (k == 3) g = x, b = c;
-  else if (k == 4) r = x, b = c;
-  else r = c, b = x;
-  return {static_cast<unsigned char>(255 * (r + m)), static_cast<unsigned char>(255 * (g + m)),
-          static_cast<unsigned char>(255 * (b + m))};
+vtkSmartPointer<vtkActor> triangles_actor(const Scene& scene, const std::vector<int>& which, double r, double g,
+                                          double b) {
+  vtkNew<vtkPoints> pts;
+  vtkNew<vtkCellArray> cells;
+  for (int ti : which) {
+    const auto& t = scene.triangles[ti];
+    vtkIdType ids[3];
+    for (int k = 0; k < 3; ++k) {
+      const Point3& p = scene.corner(t, k);
+      ids[k] = pts->InsertNextPoint(p.x, p.y, p.z);
+    }
+    cells->InsertNextCell(3, ids);
+  }
+  vtkNew<vtkPolyData> poly;
+  poly->SetPoints(pts);
+  poly->SetPolys(cells);
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputData(poly);
+  auto actor = vtkSmartPointer<vtkActor>::New();
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetColor(r, g, b);
+  actor->GetProperty()->BackfaceCullingOn();
+  return actor;
 }
 
 }  // namespace
 
-void render_png(const std::string& path, const std::vector<PngPanel>& panels, int panel_pixels) {
-  if (panels.empty()) throw OutputError(path + ": nothing to render");
-  HeadlessDisplay display(path);
-  write_atomically(path, [&](const std::string& temp) {
-    QuietVtk quiet;
-    vtkNew<vtkRenderWindow> window;
-    window->SetOffScreenRendering(1);
-    window->SetSize(panel_pixels * static_cast<int>(panels.size()), panel_pixels);
-    for (std::size_t i = 0; i < panels.size(); ++i) {
-      const PngPanel& p = panels[i];
-      vtkNew<vtkRenderer> renderer;
-      renderer->SetViewport(double(i) / panels.size(), 0, double(i + 1) / panels.size(), 1);
-      renderer->SetBackground(1, 1, 1);
-      vtkNew<vtkPoints> pts;
-      for (const auto& q : p.points) pts->InsertNextPoint(q.x, q.y, q.z);
-      vtkNew<vtkCellArray> polys;
-      vtkNew<vtkUnsignedCharArray> rgb;
-      rgb->SetNumberOfComponents(3);
-      for (std::size_t t = 0; t < p.triangles.size(); ++t) {
-        const vtkIdType ids[3] = {p.triangles[t][0], p.triangles[t][1], p.triangles[t][2]};
-        polys->InsertNextCell(3, ids);
-        const auto c = colour(t < p.values.size() ? p.values[t] : -1);
-        rgb->InsertNextTypedTuple(c.data());
-      }
-      vtkNew<vtkPolyData> surface;
-      surface->SetPoints(pts);
-      surface->SetPolys(polys);
-      surface->GetCellData()->SetScalars(rgb);
-      vtkNew<vtkPolyDataMapper> mapper;
-      mapper->SetInputData(surface);
-      mapper->SetScalarModeToUseCellData();
-      mapper->SetColorModeToDirectScalars();
-      vtkNew<vtkActor> actor;
-      actor->SetMapper(mapper);
-      renderer->AddActor(actor);
-      vtkNew<vtkPoints> cpts;
-      vtkNew<vtkCellArray> lines;
-      for (const auto& curve : p.curves) {
-        std::vector<vtkIdType> ids;
-        for (const auto& q : curve) ids.push_back(cpts->InsertNextPoint(q.x, q.y, q.z));
-        lines->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
-      }
-      vtkNew<vtkPolyData> curves;
-      curves->SetPoints(cpts);
-      curves->SetLines(lines);
-      vtkNew<vtkPolyDataMapper> cmapper;
-      cmapper->SetInputData(curves);
-      vtkNew<vtkActor> cactor;
-      cactor->SetMapper(cmapper);
-      cactor->GetProperty()->SetColor(0, 0, 0);
-      cactor->GetProperty()->SetLineWidth(2);
-      renderer->AddActor(cactor);
-      vtkCamera* cam = renderer->GetActiveCamera();
-      cam->SetFocalPoint(p.focal.x, p.focal.y, p.focal.z);
-      cam->SetPosition(p.eye.x, p.eye.y, p.eye.z);
-      cam->SetViewUp(p.up.x, p.up.y, p.up.z);
-      cam->SetParallelProjection(p.orthographic ? 1 : 0);
-      if (p.orthographic) {
-        renderer->ResetCamera();
-      } else {
-        cam->SetViewAngle(p.view_angle);
-        renderer->ResetCameraClippingRange();
-      }
-      window->AddRenderer(renderer);
+bool render_shadows_png(const std::string& temp_path, const Scene& scene, const shadows::ShadowResult& result,
+                        const std::vector<int>& light, int width, int height) {
+  HeadlessDisplay display(temp_path);
+  QuietVtk quiet;
+  vtkNew<vtkPoints> pts;
+  pts->SetDataTypeToDouble();
+  vtkNew<vtkDoubleArray> irr;
+  irr->SetName("irradiance");
+  vtkNew<vtkCellArray> cells;
+  double emax = 0;
+  std::set<std::int64_t> meshed;
+  for (const auto& r : result.receivers) {
+    meshed.insert(r.triangle);
+    const vtkIdType base = pts->GetNumberOfPoints();
+    for (std::size_t k = 0; k < r.vertices.size(); ++k) {
+      const auto& v = r.vertices[k];
+      pts->InsertNextPoint(CGAL::to_double(v.x), CGAL::to_double(v.y), CGAL::to_double(v.z));
+      const double e = k < r.vertex_irradiance.size() ? r.vertex_irradiance[k] : 0.0;
+      irr->InsertNextValue(e);
+      emax = std::max(emax, e);
     }
-    window->Render();
-    vtkNew<vtkWindowToImageFilter> grab;
-    grab->SetInput(window);
-    grab->ReadFrontBufferOff();
-    grab->Update();
-    vtkNew<vtkPNGWriter> writer;
-    writer->SetFileName(temp.c_str());
-    writer->SetInputConnection(grab->GetOutputPort());
-    writer->Write();
-    return writer->GetErrorCode() == 0;
-  });
+    for (const auto& t : r.mesh.triangles) {
+      const vtkIdType ids[3] = {base + t[0], base + t[1], base + t[2]};
+      cells->InsertNextCell(3, ids);
+    }
+  }
+  vtkNew<vtkPolyData> mesh;
+  mesh->SetPoints(pts);
+  mesh->SetPolys(cells);
+  mesh->GetPointData()->SetScalars(irr);
+  vtkNew<vtkLookupTable> lut;
+  lut->SetNumberOfTableValues(256);
+  for (int i = 0; i < 256; ++i) {
+    const double x = i / 255.0;  // black -> orange -> white
+    lut->SetTableValue(i, std::min(1.0, 1.6 * x), std::min(1.0, 1.1 * x * x + 0.3 * x), x * x * x, 1.0);
+  }
+  lut->Build();
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputData(mesh);
+  mapper->SetLookupTable(lut);
+  std::vector<double> values;
+  for (vtkIdType i = 0; i < irr->GetNumberOfValues(); ++i) values.push_back(irr->GetValue(i));
+  double top = emax;
+  if (!values.empty()) {
+    const std::size_t k = values.size() * 95 / 100;
+    std::nth_element(values.begin(), values.begin() + k, values.end());
+    top = values[std::min(k, values.size() - 1)];
+  }
+  mapper->SetScalarRange(0, top > 0 ? top : (emax > 0 ? emax : 1));
+  mapper->SetInterpolateScalarsBeforeMapping(true);
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetAmbient(1.0);  // show irradiance, not VTK's own lighting
+  actor->GetProperty()->SetDiffuse(0.0);
+  // Back faces are culled so that a closed room whose faces point inwards is seen through its outer walls.
+  actor->GetProperty()->BackfaceCullingOn();
+
+  vtkNew<vtkRenderer> renderer;
+  renderer->AddActor(actor);
+  const std::set<int> light_set(light.begin(), light.end());
+  std::vector<int> others;
+  for (std::size_t i = 0; i < scene.triangles.size(); ++i)
+    if (!light_set.count(static_cast<int>(i)) && !meshed.count(static_cast<std::int64_t>(i)))
+      others.push_back(static_cast<int>(i));
+  if (!others.empty()) renderer->AddActor(triangles_actor(scene, others, 0.55, 0.55, 0.6));
+  auto light_actor = triangles_actor(scene, light, 1.0, 0.95, 0.4);
+  light_actor->GetProperty()->SetAmbient(1.0);
+  light_actor->GetProperty()->SetDiffuse(0.0);
+  renderer->AddActor(light_actor);
+  renderer->SetBackground(0.12, 0.14, 0.18);
+  // Camera: "up" is the first light triangle's normal, oriented from the scene's centre towards the light
+  // (lights usually hang from a ceiling); the view comes from above one side of the scene box.
+  const Box3 box = bounding_box(scene);
+  const Point3 centre{(box.lo.x + box.hi.x) / 2, (box.lo.y + box.hi.y) / 2, (box.lo.z + box.hi.z) / 2};
+  Point3 up{0, 0, 1};
+  if (!light.empty()) {
+    const auto& lt = scene.triangles[light.front()];
+    const Point3 a = scene.corner(lt, 0), b = scene.corner(lt, 1), c = scene.corner(lt, 2);
+    Point3 n = cross(b - a, c - a);
+    const Point3 lc{(a.x + b.x + c.x) / 3, (a.y + b.y + c.y) / 3, (a.z + b.z + c.z) / 3};
+    if (dot(n, lc - centre) < 0) n = -n;
+    const double l = std::sqrt(dot(n, n));
+    if (l > 0) up = {n.x / l, n.y / l, n.z / l};
+  }
+  Point3 side = cross(up, Point3{0.3, 0.5, 0.8});
+  if (dot(side, side) < 1e-6) side = cross(up, Point3{1, 0, 0});
+  const double sl = std::sqrt(dot(side, side));
+  side = {side.x / sl, side.y / sl, side.z / sl};
+  const Point3 ext = box.hi - box.lo;
+  const double diag = std::sqrt(dot(ext, ext));
+  vtkCamera* cam = renderer->GetActiveCamera();
+  cam->SetFocalPoint(centre.x, centre.y, centre.z);
+  cam->SetPosition(centre.x + diag * (1.1 * up.x + side.x), centre.y + diag * (1.1 * up.y + side.y),
+                   centre.z + diag * (1.1 * up.z + side.z));
+  cam->SetViewUp(up.x, up.y, up.z);
+  renderer->ResetCamera();
+  renderer->ResetCameraClippingRange();
+
+  vtkNew<vtkRenderWindow> window;
+  window->SetOffScreenRendering(1);
+  window->AddRenderer(renderer);
+  window->SetSize(width, height);
+  window->Render();
+  vtkNew<vtkWindowToImageFilter> grab;
+  grab->SetInput(window);
+  grab->ReadFrontBufferOff();
+  grab->Update();
+  vtkNew<vtkPNGWriter> writer;
+  writer->SetFileName(temp_path.c_str());
+  writer->SetInputConnection(grab->GetOutputPort());
+  writer->Write();
+  return writer->GetErrorCode() == 0;
 }
 
 }  // namespace exactvis

@@ -1,30 +1,22 @@
 #pragma once
-// PNG pictures through VTK's offscreen rendering (io/headless_display.hpp provides the X display VTK
-// needs): panels side by side, each a triangle surface coloured by integer values (a fixed palette; -1
-// grey) with black curves, seen by an orthographic or a perspective camera. Display only.
+// A rendered picture of the lit scene for `exactvis shadows --png` (VTK, offscreen). The shadow mesh is drawn
+// coloured by per-vertex irradiance (black = umbra, through orange to white at the largest irradiance), the
+// lights in yellow and the other triangles in grey; the camera looks at the scene box from above one corner.
+//
+// Headless rendering: Debian's VTK 9.1 is built for X11 only (no OSMesa, no EGL), so it needs an X display.
+// When DISPLAY is unset, the renderer starts its own virtual display (`Xvfb -displayfd`, Mesa's software
+// OpenGL), renders, and stops that Xvfb process (only the one it started). Xvfb missing or failing is an
+// OutputError ("FILE: cannot render: ...").
 #include "kernel/scene.hpp"
+#include "shadows/shadow_mesh.hpp"
 
-#include <array>
-#include <cstdint>
 #include <string>
 #include <vector>
 
 namespace exactvis {
 
-struct PngPanel {
-  std::vector<Point3> points;
-  std::vector<std::array<int, 3>> triangles;
-  std::vector<std::int64_t> values;          // per triangle: palette index, -1 grey
-  std::vector<std::vector<Point3>> curves;   // drawn black
-  Point3 focal{0, 0, 0};                     // the camera looks at focal
-  Point3 eye{0, 0, 1};                       // perspective: the camera position; orthographic: focal + direction
-  bool orthographic = true;
-  Point3 up{0, 0, 1};
-  double view_angle = 45;                    // perspective: degrees
-};
-
-// Input: path (.png), panels (>= 1), the size of one square panel in pixels. Output: the file (atomically).
-// Throws OutputError.
-void render_png(const std::string& path, const std::vector<PngPanel>& panels, int panel_pixels);
+// Renders to `temp_path` (.png), width x height pixels. Returns false (or throws OutputError) on failure.
+bool render_shadows_png(const std::string& temp_path, const Scene& scene, const shadows::ShadowResult& result,
+                        const std::vector<int>& light, int width = 1280, int height = 960);
 
 }  // namespace exactvis
