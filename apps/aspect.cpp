@@ -16,6 +16,7 @@
 #include <cmath>
 #include <fstream>
 #include <iostream>
+#include <sstream>
 
 namespace {
 
@@ -136,6 +137,20 @@ std::vector<PngPanel> png_panels(const Scene& scene, const ConvexModel& model, c
   return panels;
 }
 
+// Cost warning before the work (docs/cli.md): time scaled from docs/performance.md (bench_aspect: 15.9 s for
+// 186 face planes orthographic, growth about m^3; 41.9 s for 48 planes perspective, about m^4).
+std::string cost_warning(std::size_t m, ViewModel view) {
+  const bool ortho = view == ViewModel::Orthographic;
+  const double seconds = ortho ? 15.9 * std::pow(m / 186.0, 3) : 41.9 * std::pow(m / 48.0, 4);
+  if (seconds < 60) return "";
+  std::ostringstream w;
+  w.precision(2);
+  w << "aspect: warning: " << m << " face planes: the " << (ortho ? "orthographic" : "perspective")
+    << " arrangement has O(m^" << (ortho ? 2 : 3) << ") cells at O(m) each; roughly " << seconds
+    << " s (scaled from docs/performance.md)";
+  return w.str();
+}
+
 int run(const AspectOptions& o) {
   const int views = int(o.orthographic) + int(o.perspective) + int(!o.plane.empty());
   if (views != 1) throw std::invalid_argument("--orthographic, --perspective or --plane z=H: give exactly one");
@@ -164,6 +179,9 @@ int run(const AspectOptions& o) {
     throw InputError(label + ": not a closed convex model (" + model.problem +
                      "); the orthographic aspect graph of non-convex models is not implemented yet");
   }
+  const ViewModel view =
+      o.orthographic ? ViewModel::Orthographic : (o.perspective ? ViewModel::Perspective : ViewModel::Plane);
+  if (const std::string w = cost_warning(model.planes.size(), view); !w.empty() && !o.quiet) std::cerr << w << std::endl;
   const AspectGraph3 g = [&] {
     app::FractionProgress bar("aspect: arrangement", app::progress_wanted(o.quiet));
     return !o.plane.empty() ? convex_aspect_graph_on_plane(scene, model, Vec3<Exact>(0, 0, 1), height, bar.callback())

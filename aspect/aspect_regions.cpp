@@ -51,12 +51,17 @@ AspectRegions aspect_regions(const std::vector<AspectCell>& cells, const std::ve
     r.members.push_back(std::move(groups[order[id]]));
     r.dimension.push_back(dim[order[id]]);
   }
-  std::map<std::pair<int, int>, std::pair<int, int>> pairs;
+  // One entry per region pair, witnessed by its first touching pair (stable sort keeps the order found).
   for (const auto& [lo, up] : touching) {
-    const int a = r.region_of[lo], b = r.region_of[up];
-    pairs.emplace(std::minmax(a, b), std::pair<int, int>{lo, up});
+    const auto [a, b] = std::minmax(r.region_of[lo], r.region_of[up]);
+    r.adjacency.push_back({a, b, lo, up});
   }
-  for (const auto& [ab, w] : pairs) r.adjacency.push_back({ab.first, ab.second, w.first, w.second});
+  std::stable_sort(r.adjacency.begin(), r.adjacency.end(), [](const auto& x, const auto& y) {
+    return x.a != y.a ? x.a < y.a : x.b < y.b;
+  });
+  r.adjacency.erase(std::unique(r.adjacency.begin(), r.adjacency.end(),
+                                [](const auto& x, const auto& y) { return x.a == y.a && x.b == y.b; }),
+                    r.adjacency.end());
   return r;
 }
 
