@@ -2,6 +2,7 @@
 
 #include "io/atomic_file.hpp"
 #include "io/headless_display.hpp"
+#include "io/render_png.hpp"
 #include "io/vtk_quiet.hpp"
 
 #include <vtkActor.h>
@@ -9,7 +10,6 @@
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkNew.h>
-#include <vtkPNGWriter.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
@@ -17,7 +17,6 @@
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
 #include <vtkUnsignedCharArray.h>
-#include <vtkWindowToImageFilter.h>
 
 #include <cmath>
 
@@ -109,16 +108,7 @@ void render_panels_png(const std::string& path, const std::vector<PngPanel>& pan
       }
       window->AddRenderer(renderer);
     }
-    window->Render();
-    vtkNew<vtkWindowToImageFilter> grab;
-    grab->SetInput(window);
-    grab->ReadFrontBufferOff();
-    grab->Update();
-    vtkNew<vtkPNGWriter> writer;
-    writer->SetFileName(temp.c_str());
-    writer->SetInputConnection(grab->GetOutputPort());
-    writer->Write();
-    return writer->GetErrorCode() == 0;
+    return save_render_window_png(window, temp);
   });
 }
 

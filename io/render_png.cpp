@@ -159,13 +159,17 @@ bool render_shadows_png(const std::string& temp_path, const Scene& scene, const 
   window->SetOffScreenRendering(1);
   window->AddRenderer(renderer);
   window->SetSize(width, height);
+  return save_render_window_png(window, temp_path);
+}
+
+bool save_render_window_png(vtkRenderWindow* window, const std::string& path) {
   window->Render();
   vtkNew<vtkWindowToImageFilter> grab;
   grab->SetInput(window);
   grab->ReadFrontBufferOff();
   grab->Update();
   vtkNew<vtkPNGWriter> writer;
-  writer->SetFileName(temp_path.c_str());
+  writer->SetFileName(path.c_str());
   writer->SetInputConnection(grab->GetOutputPort());
   writer->Write();
   return writer->GetErrorCode() == 0;

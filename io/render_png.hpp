@@ -13,7 +13,13 @@
 #include <string>
 #include <vector>
 
+class vtkRenderWindow;
+
 namespace exactvis {
+
+// Renders `window` (offscreen, size and renderers set) and writes its back buffer to `path` as PNG.
+// Returns whether the PNG writer succeeded. Shared by every offscreen picture (io/render_partition_png).
+bool save_render_window_png(vtkRenderWindow* window, const std::string& path);
 
 // Renders to `temp_path` (.png), width x height pixels. Returns false (or throws OutputError) on failure.
 bool render_shadows_png(const std::string& temp_path, const Scene& scene, const shadows::ShadowResult& result,
