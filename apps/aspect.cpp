@@ -137,11 +137,11 @@ std::vector<PngPanel> png_panels(const Scene& scene, const ConvexModel& model, c
   return panels;
 }
 
-// Cost warning before the work (docs/cli.md): time scaled from docs/performance.md (bench_aspect: 15.9 s for
-// 186 face planes orthographic, growth about m^3; 41.9 s for 48 planes perspective, about m^4).
+// Cost warning before the work (docs/cli.md): time scaled from docs/performance.md (bench_aspect: 3.9 CPU s
+// for 186 face planes orthographic, growth below m^3; 7.7 s for 62 planes perspective, below m^4).
 std::string cost_warning(std::size_t m, ViewModel view) {
   const bool ortho = view == ViewModel::Orthographic;
-  const double seconds = ortho ? 15.9 * std::pow(m / 186.0, 3) : 41.9 * std::pow(m / 48.0, 4);
+  const double seconds = ortho ? 3.9 * std::pow(m / 186.0, 3) : 7.7 * std::pow(m / 62.0, 4);
   if (seconds < 60) return "";
   std::ostringstream w;
   w.precision(2);
