@@ -118,6 +118,13 @@ TEST(AspectCli, PerspectiveOnANonConvexModelPointsToPlane) {
   EXPECT_NE(r.err.find("--plane"), std::string::npos) << r.err;
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1);
   EXPECT_FALSE(fs::exists(d / "o.json"));
+  // Orthographic and --plane on non-convex models: not implemented, said so in one line.
+  for (const std::string view : {"--orthographic", "--plane z=0"}) {
+    const auto o = run_exactvis(d, "aspect " + (d / "two.obj").string() + " " + view);
+    EXPECT_EQ(o.status, 1);
+    EXPECT_NE(o.err.find("not implemented yet"), std::string::npos) << o.err;
+    EXPECT_EQ(std::count(o.err.begin(), o.err.end(), '\n'), 1);
+  }
 }
 
 TEST(AspectCli, BadOptions) {
