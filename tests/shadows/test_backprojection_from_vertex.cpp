@@ -1,14 +1,17 @@
-// The visible part of a triangle from a vertex, against the independent oracle (tests/oracles/
-// rational_geometry: open segment vs closed triangle) on random rational sample points, and exact areas.
+// The 3D skeleton issue's point-to-polygon query (docs/theory.md section 9, "Queries"): the visible part of a
+// triangle seen from a scene *vertex* is shadows::backproject at that vertex's position (the vertex's own
+// triangles pass through it and hide nothing of positive area). Checked against the independent oracle
+// (tests/oracles/rational_geometry: open segment vs closed triangle) on random rational points, and exact
+// areas.
 #include "kernel/triangle_index.hpp"
 #include "oracles/rational_geometry.hpp"
-#include "region/vertex_polygon_view.hpp"
+#include "shadows/backprojection.hpp"
 
 #include <gtest/gtest.h>
 
 #include <random>
 
-namespace exactvis::region {
+namespace exactvis::shadows {
 namespace {
 
 using oracle::QVec;
@@ -47,9 +50,14 @@ int in_ring(const QVec& p, const std::vector<QVec>& ring, int drop) {
   return inside ? 1 : 0;
 }
 
+Backprojection view_from_vertex(const Scene& s, const TriangleIndex& index, int vertex, int triangle) {
+  const Point3& v = s.vertices[vertex];
+  return backproject(s, index, {triangle}, RationalPoint3{Exact(v.x), Exact(v.y), Exact(v.z)});
+}
+
 // 1 seen, 0 not, -1 on a boundary.
-int in_view(const VertexPolygonView& view, const QVec& p, int drop) {
-  for (const auto& vp : view.visible) {
+int in_view(const Backprojection& view, const QVec& p, int drop) {
+  for (const auto& vp : view.parts.at(0).pieces) {
     std::vector<QVec> outer;
     for (const auto& q : vp.outer) outer.push_back(qv(q));
     const int o = in_ring(p, outer, drop);
@@ -72,8 +80,7 @@ int in_view(const VertexPolygonView& view, const QVec& p, int drop) {
 
 void check_by_sampling(const Scene& s, int vertex, int triangle, unsigned seed, int* seen_count, int* hidden_count) {
   const TriangleIndex index(s);
-  const VertexPolygonView view = vertex_polygon_view(s, index, vertex, triangle);
-  ASSERT_FALSE(view.grazing);
+  const Backprojection view = view_from_vertex(s, index, vertex, triangle);
   const auto& t = s.triangles[triangle];
   const QVec a = qv(s.corner(t, 0)), b = qv(s.corner(t, 1)), c = qv(s.corner(t, 2));
   const QVec n = oracle::cross(b - a, c - a);
@@ -103,38 +110,32 @@ void check_by_sampling(const Scene& s, int vertex, int triangle, unsigned seed, 
   }
 }
 
-TEST(VertexPolygonView, UnblockedTriangleIsSeenWhole) {
+TEST(BackprojectionFromVertex, UnblockedTriangleIsSeenWhole) {
   const Scene s = soup({{Point3{0, 0, 5}, Point3{1, 0, 5}, Point3{0, 1, 5}}, {Point3{-3, -3, 0}, Point3{4, -2, 0}, Point3{0, 5, 0}}});
   const TriangleIndex index(s);
-  const auto view = vertex_polygon_view(s, index, 0, 1);
-  ASSERT_EQ(view.visible.size(), 1u);
-  EXPECT_TRUE(view.visible[0].holes.empty());
-  // Area of T projected on z = 0: |det| / 2 = ((7)(8) - (1)(3)) / 2 = 53/2.
-  EXPECT_EQ(projected_area(view, s, 1), Exact(53, 2));
-  EXPECT_TRUE(view.occluders.empty());
+  const auto view = view_from_vertex(s, index, 0, 1);
+  ASSERT_EQ(view.parts.at(0).pieces.size(), 1u);
+  EXPECT_TRUE(view.parts[0].pieces[0].holes.empty());
+  EXPECT_EQ(view.parts[0].visible_area_2d, view.parts[0].area_2d);
+  EXPECT_TRUE(view.blockers.empty());
 }
 
-TEST(VertexPolygonView, OccluderCastsAnExactHole) {
+TEST(BackprojectionFromVertex, OccluderCastsAnExactHole) {
   // V = (0, 0, 10); a small square-ish triangle at z = 5 casts a shadow scaled by 2 on the floor z = 0.
   const Scene s = soup({{Point3{0, 0, 10}, Point3{1, 0, 10}, Point3{0, 1, 10}},
                         {Point3{-1, -1, 5}, Point3{1, -1, 5}, Point3{0, 1, 5}},
                         {Point3{-10, -10, 0}, Point3{10, -10, 0}, Point3{0, 10, 0}}});
   const TriangleIndex index(s);
-  const auto view = vertex_polygon_view(s, index, 0, 2);
-  ASSERT_EQ(view.visible.size(), 1u);
-  ASSERT_EQ(view.visible[0].holes.size(), 1u);
-  // T: (20 * 20) / 2 = 200; the shadow: occluder area 2 scaled by 2^2 = 8.
-  EXPECT_EQ(projected_area(view, s, 2), Exact(192));
-  EXPECT_EQ(view.occluders, (std::vector<std::int64_t>{1}));
+  const auto view = view_from_vertex(s, index, 0, 2);
+  ASSERT_EQ(view.parts.at(0).pieces.size(), 1u);
+  ASSERT_EQ(view.parts[0].pieces[0].holes.size(), 1u);
+  // T (on z = 0, chart drops z): 20 * 20 / 2 = 200; the shadow: occluder area 2 scaled by 2^2 = 8.
+  EXPECT_EQ(view.parts[0].area_2d, Exact(200));
+  EXPECT_EQ(view.parts[0].visible_area_2d, Exact(192));
+  EXPECT_EQ(view.blockers, (std::vector<std::int64_t>{1}));
 }
 
-TEST(VertexPolygonView, GrazingVertexSeesNothing) {
-  const Scene s = soup({{Point3{5, 0, 0}, Point3{6, 0, 1}, Point3{5, 1, 2}}, {Point3{0, 0, 0}, Point3{1, 0, 0}, Point3{0, 1, 0}}});
-  const TriangleIndex index(s);
-  EXPECT_TRUE(vertex_polygon_view(s, index, 0, 1).grazing);
-}
-
-TEST(VertexPolygonView, RandomSoupsAgreeWithTheOracleOnSamples) {
+TEST(BackprojectionFromVertex, RandomSoupsAgreeWithTheOracleOnSamples) {
   int seen = 0, hidden = 0;
   for (unsigned seed = 1; seed <= 4; ++seed) {
     std::mt19937 rng(seed);
@@ -156,4 +157,4 @@ TEST(VertexPolygonView, RandomSoupsAgreeWithTheOracleOnSamples) {
 }
 
 }  // namespace
-}  // namespace exactvis::region
+}  // namespace exactvis::shadows
