@@ -13,7 +13,9 @@
 #include "skeleton/skeleton_pair.hpp"
 #include "skeleton/visibility_skeleton_3d.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <ctime>
 #include <cstdio>
 #include <random>
 #include <string>
@@ -48,7 +50,7 @@ Scene polytope_scene(int k, std::uint64_t seed) {
 
 struct Row {
   std::size_t tris = 0, edges = 0, nodes = 0, degenerate = 0, ev_arcs = 0, eee_arcs = 0;
-  double events_s = 0, nodes_s = 0, total_s = 0;
+  double events_s = 0, nodes_s = 0, total_s = 0, cpu_s = 0;
 };
 
 Row run(const Scene& s) {
@@ -56,8 +58,10 @@ Row run(const Scene& s) {
   r.tris = s.triangles.size();
   r.edges = build_scene_adjacency(s).edges.size();
   const double t0 = bench::now();
+  const std::clock_t c0 = std::clock();
   const Skeleton3D sk = build_skeleton_3d(s);
   r.total_s = bench::now() - t0;
+  r.cpu_s = double(std::clock() - c0) / CLOCKS_PER_SEC;
   for (const auto& n : sk.nodes) (n.valid ? r.nodes : r.degenerate) += 1;
   for (const auto& a : sk.arcs) (a.kind == SkeletonArcKind::EV ? r.ev_arcs : r.eee_arcs) += 1;
   r.events_s = sk.stats.seconds_events;
@@ -66,14 +70,14 @@ Row run(const Scene& s) {
 }
 
 void header(const char* title) {
-  std::printf("\n%s\n%-10s %6s %6s %7s %6s %7s %7s %9s %9s %9s %10s %7s\n", title, "scene", "tris", "edges", "nodes",
-              "degen", "EVarcs", "EEEarcs", "events.s", "nodes.s", "total.s", "us/node", "growth");
+  std::printf("\n%s\n%-10s %6s %6s %7s %6s %7s %7s %9s %9s %9s %9s %10s %7s\n", title, "scene", "tris", "edges",
+              "nodes", "degen", "EVarcs", "EEEarcs", "events.s", "nodes.s", "total.s", "cpu.s", "us/node", "growth");
 }
 
 void print(const std::string& name, const Row& r, const Row* prev) {
   const double per_node = r.nodes + r.degenerate > 0 ? 1e6 * r.total_s / double(r.nodes + r.degenerate) : 0;
-  std::printf("%-10s %6zu %6zu %7zu %6zu %7zu %7zu %9.3f %9.3f %9.3f %10.1f ", name.c_str(), r.tris, r.edges, r.nodes,
-              r.degenerate, r.ev_arcs, r.eee_arcs, r.events_s, r.nodes_s, r.total_s, per_node);
+  std::printf("%-10s %6zu %6zu %7zu %6zu %7zu %7zu %9.3f %9.3f %9.3f %9.3f %10.1f ", name.c_str(), r.tris, r.edges,
+              r.nodes, r.degenerate, r.ev_arcs, r.eee_arcs, r.events_s, r.nodes_s, r.total_s, r.cpu_s, per_node);
   if (prev && prev->total_s > 0 && r.tris > prev->tris)
     std::printf("%7.2f\n", std::log(r.total_s / prev->total_s) / std::log(double(r.tris) / double(prev->tris)));
   else
@@ -115,14 +119,20 @@ int main(int argc, char** argv) {
     print("town" + n, r, have_prev ? &prev : nullptr);
     prev = r, have_prev = true;
   }
-  if (!largest.triangles.empty() && largest.objects.size() >= 2) {
-    // Lazy pair: neighbouring tetrahedra 0 and 1, against the full build of the same scene (same run).
+  if (largest.objects.size() >= 3) {
+    // Lazy pair: tetrahedron 0 and the one in the opposite corner of the bottom grid layer (the others of
+    // that layer between them), against the full build of the same scene (same run).
+    int side = 1;
+    while (side * side * side < static_cast<int>(largest.objects.size())) ++side;
+    const int far = std::min(static_cast<int>(largest.objects.size()) - 1, side * side - 1);
     const double t0 = bench::now();
-    const Skeleton3D pair = build_pair_skeleton(largest, {0, -1}, {1, -1});
+    const Skeleton3D pair = build_pair_skeleton(largest, {0, -1}, {far, -1});
     const double t = bench::now() - t0;
-    std::printf("\nlazy pair (tet0, tet1) of the largest polytope scene (%zu triangles): %.4f s, %zu nodes, %zu arcs; "
-                "full build %.3f s; ratio lazy/full %.4f\n",
-                largest.triangles.size(), t, pair.nodes.size(), pair.arcs.size(), largest_full, t / largest_full);
+    const auto blockers = pair_blockers(largest, pair, pair_slice(largest, pair, {0, -1}, {far, -1}), {0, -1}, {far, -1});
+    std::printf("\nlazy pair (tet0, tet%d) of the largest polytope scene (%zu triangles): %.4f s, %zu nodes, %zu arcs, "
+                "%zu blockers; full build %.3f s; ratio lazy/full %.4f\n",
+                far, largest.triangles.size(), t, pair.nodes.size(), pair.arcs.size(), blockers.size(), largest_full,
+                t / largest_full);
   }
   return 0;
 }
