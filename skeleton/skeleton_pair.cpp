@@ -95,13 +95,7 @@ Skeleton3D build_pair_skeleton(const Scene& scene, const SkeletonPairSide& a, co
     out.arcs.push_back(std::move(arc));
   }
   for (auto& n : out.nodes) std::sort(n.arcs.begin(), n.arcs.end());
-  auto pair_key = [&](const std::array<std::int64_t, 2>& ends) {
-    std::array<int, 2> k{object_of_triangle(scene, ends[0]), object_of_triangle(scene, ends[1])};
-    if (k[1] < k[0]) std::swap(k[0], k[1]);
-    return k;
-  };
-  for (std::size_t i = 0; i < out.nodes.size(); ++i) out.by_objects[pair_key(out.nodes[i].ends)].nodes.push_back(int(i));
-  for (std::size_t i = 0; i < out.arcs.size(); ++i) out.by_objects[pair_key(out.arcs[i].ends)].arcs.push_back(int(i));
+  fill_object_table(scene, out);
   out.stats = full.stats;
   return out;
 }
