@@ -6,6 +6,7 @@
 #include "io/load_scene.hpp"
 #include "io/write_skeleton_json.hpp"
 #include "io/write_skeleton_vtp.hpp"
+#include "skeleton/skeleton_pair.hpp"
 #include "skeleton/visibility_skeleton_3d.hpp"
 
 #include <chrono>
@@ -24,7 +25,7 @@ struct SkeletonCliOptions {
 };
 
 // One side of --pair: an object's exact name, else a stable triangle id (a whole number that is one).
-EndMatch parse_pair_side(const Scene& scene, const std::string& text, const std::string& spec) {
+SkeletonPairSide parse_pair_side(const Scene& scene, const std::string& text, const std::string& spec) {
   for (std::size_t i = 0; i < scene.objects.size(); ++i)
     if (scene.objects[i].name == text) return {static_cast<int>(i), -1};
   bool digits = !text.empty() && text.size() <= 18;
@@ -39,7 +40,7 @@ EndMatch parse_pair_side(const Scene& scene, const std::string& text, const std:
 int run(const SkeletonCliOptions& o) {
   OutputFiles outputs({o.output, o.vtp});  // fails now, not after the work, when an output cannot be created
   const Scene scene = load_scenes(o.scenes);
-  std::optional<std::pair<EndMatch, EndMatch>> pair;
+  std::optional<std::pair<SkeletonPairSide, SkeletonPairSide>> pair;
   if (!o.pair.empty()) {
     const auto items = app::split(o.pair, ',');
     if (items.size() != 2 || items[0].empty() || items[1].empty())
@@ -49,9 +50,9 @@ int run(const SkeletonCliOptions& o) {
   const auto start = std::chrono::steady_clock::now();
   SkeletonOptions opt;
   opt.progress = app::progress_wanted(o.quiet);
-  const Skeleton3D sk = build_skeleton_3d(scene, opt);
-  const SkeletonSelection sel =
-      pair ? pair_selection(scene, sk, pair->first, pair->second) : full_selection(sk);
+  // --pair: the lazy build of that pair's slice only (skeleton/skeleton_pair.hpp).
+  const Skeleton3D sk = pair ? build_pair_skeleton(scene, pair->first, pair->second, opt) : build_skeleton_3d(scene, opt);
+  const SkeletonSelection sel = full_selection(sk);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const std::string text = o.json ? skeleton_to_json(scene, sk, sel).dump(2) + "\n" : skeleton_to_text(sk, sel, seconds);
   if (!o.vtp.empty()) outputs.write(o.vtp, [&](const std::string& temp) {

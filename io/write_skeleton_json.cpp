@@ -7,7 +7,6 @@
 #include <algorithm>
 #include <cstdio>
 #include <map>
-#include <set>
 #include <sstream>
 
 namespace exactvis {
@@ -35,37 +34,12 @@ ojson end_json(const Scene& scene, std::int64_t id) {
 
 ojson edge_json(const EdgeIds& e) { return ojson::array({e[0], e[1]}); }
 
-bool matches(const Scene& scene, std::int64_t end, const EndMatch& m) {
-  if (m.triangle >= 0) return end == m.triangle;
-  return object_of_triangle(scene, end) == m.object;
-}
-
-bool pair_matches(const Scene& scene, const std::array<std::int64_t, 2>& ends, const EndMatch& a, const EndMatch& b) {
-  return (matches(scene, ends[0], a) && matches(scene, ends[1], b)) ||
-         (matches(scene, ends[0], b) && matches(scene, ends[1], a));
-}
-
 }  // namespace
 
 SkeletonSelection full_selection(const Skeleton3D& skeleton) {
   SkeletonSelection s;
   for (std::size_t i = 0; i < skeleton.nodes.size(); ++i) s.nodes.push_back(static_cast<int>(i));
   for (std::size_t i = 0; i < skeleton.arcs.size(); ++i) s.arcs.push_back(static_cast<int>(i));
-  return s;
-}
-
-SkeletonSelection pair_selection(const Scene& scene, const Skeleton3D& skeleton, const EndMatch& a,
-                                 const EndMatch& b) {
-  std::set<int> nodes;
-  SkeletonSelection s;
-  for (std::size_t i = 0; i < skeleton.arcs.size(); ++i)
-    if (pair_matches(scene, skeleton.arcs[i].ends, a, b)) {
-      s.arcs.push_back(static_cast<int>(i));
-      nodes.insert(skeleton.arcs[i].nodes.begin(), skeleton.arcs[i].nodes.end());
-    }
-  for (std::size_t i = 0; i < skeleton.nodes.size(); ++i)
-    if (pair_matches(scene, skeleton.nodes[i].ends, a, b)) nodes.insert(static_cast<int>(i));
-  s.nodes.assign(nodes.begin(), nodes.end());
   return s;
 }
 

@@ -18,15 +18,6 @@ struct SkeletonSelection {
 // Everything: all nodes and arcs.
 SkeletonSelection full_selection(const Skeleton3D& skeleton);
 
-// The slice of one pair: the arcs and nodes whose two end objects match {a, b} (each an EndMatch), plus the
-// end nodes of those arcs, so that every written arc has its two nodes.
-struct EndMatch {
-  int object = -1;             // index into Scene::objects (when triangle < 0)
-  std::int64_t triangle = -1;  // a stable triangle id, or -1 to match by object
-};
-SkeletonSelection pair_selection(const Scene& scene, const Skeleton3D& skeleton, const EndMatch& a,
-                                 const EndMatch& b);
-
 // Input: the scene, its skeleton and a selection. Output (keys in this order):
 // {"counts": {"nodes": {"VV": n, "VEE": n, "EEEE": n, "FVE": n, "FEE": n, "VEF": n, "EEEF": n, "EEP": n,
 //   "VEFF": n, "degenerate": n}, "arcs": {"EV": n, "EEE": n}},

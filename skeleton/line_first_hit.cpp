@@ -2,6 +2,7 @@
 
 #include "kernel/ray_first_hit.hpp"
 #include "kernel/rational_between.hpp"
+#include "kernel/segment_triangle_intersection.hpp"
 
 #include <optional>
 
@@ -61,6 +62,11 @@ std::optional<R> first_parameter(const Vec3<R>& o, const Vec3<R>& d, const Vec3<
 
 bool open_segment_meets_triangle(const Vec3<RootNumber>& from, const Vec3<RootNumber>& to, const Point3& a,
                                  const Point3& b, const Point3& c) {
+  Vec3<Exact> f, t;
+  if (rational_vector(from, &f) && rational_vector(to, &t))  // the kernel's filtered exact test
+    return open_segment_meets_closed_triangle(f, t, RationalPoint3{Exact(a.x), Exact(a.y), Exact(a.z)},
+                                              RationalPoint3{Exact(b.x), Exact(b.y), Exact(b.z)},
+                                              RationalPoint3{Exact(c.x), Exact(c.y), Exact(c.z)});
   // The first point of the ray from `from` through `to` in the triangle, before `to`.
   const auto s = first_parameter(from, to - from, lift(a), lift(b), lift(c));
   return s && *s < R(1);

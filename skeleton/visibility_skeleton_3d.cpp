@@ -248,15 +248,20 @@ Skeleton3D build_skeleton_3d(const Scene& scene, const SkeletonOptions& options)
   }
 
   // 5. Durand's table.
+  fill_object_table(scene, sk);
+  sk.stats.seconds_nodes = seconds_since(node_start);
+  return sk;
+}
+
+void fill_object_table(const Scene& scene, Skeleton3D& sk) {
   auto pair_key = [&](const std::array<std::int64_t, 2>& ends) {
     std::array<int, 2> k{object_of_triangle(scene, ends[0]), object_of_triangle(scene, ends[1])};
     if (k[1] < k[0]) std::swap(k[0], k[1]);
     return k;
   };
+  sk.by_objects.clear();
   for (std::size_t i = 0; i < sk.nodes.size(); ++i) sk.by_objects[pair_key(sk.nodes[i].ends)].nodes.push_back(int(i));
   for (std::size_t i = 0; i < sk.arcs.size(); ++i) sk.by_objects[pair_key(sk.arcs[i].ends)].arcs.push_back(int(i));
-  sk.stats.seconds_nodes = seconds_since(node_start);
-  return sk;
 }
 
 SkeletonPairSlice skeleton_pair(const Skeleton3D& skeleton, int object_a, int object_b) {

@@ -89,6 +89,9 @@ Skeleton3D build_skeleton_3d(const Scene& scene, const SkeletonOptions& options 
 // order; an empty slice when nothing ends there.
 SkeletonPairSlice skeleton_pair(const Skeleton3D& skeleton, int object_a, int object_b);
 
+// (Re)builds skeleton.by_objects from the end objects of its nodes and arcs.
+void fill_object_table(const Scene& scene, Skeleton3D& skeleton);
+
 // Object index (into Scene::objects) of the triangle with stable id `id`, -1 for id -1.
 int object_of_triangle(const Scene& scene, std::int64_t id);
 

@@ -1,6 +1,7 @@
 // The 3D visibility skeleton against the independent brute-force oracle (tests/oracles/skeleton_oracle):
 // node sets of kinds VV, VEE, EEEE equal to the oracle's valid lines, every node re-checked exactly, graph
 // consistency, and Durand's table equal to the pair slices of the full skeleton.
+#include "skeleton/skeleton_validation.hpp"
 #include "skeleton/visibility_skeleton_3d.hpp"
 #include "tests/skeleton/skeleton3d_test_scenes.hpp"
 
@@ -143,7 +144,7 @@ void expect_graph_consistent(const Scene& s, const Skeleton3D& sk) {
   EXPECT_EQ(arcs, sk.arcs.size());
 }
 
-void check_scene(const Scene& s, bool with_eeee, int min_nodes) {
+void check_scene(const Scene& s, bool with_eeee, int min_nodes, bool generic) {
   SkeletonOptions opt;
   opt.parallel = false;
   const Skeleton3D sk = build_skeleton_3d(s, opt);
@@ -153,19 +154,26 @@ void check_scene(const Scene& s, bool with_eeee, int min_nodes) {
   EXPECT_EQ(got, oracle.nodes) << diff(got, oracle.nodes);
   expect_nodes_recheck(s, sk);
   expect_graph_consistent(s, sk);
+  if (generic) {
+    const SkeletonCheck check = validate_skeleton(s, sk);
+    EXPECT_GT(check.nodes_checked, 0u);
+    std::string all;
+    for (const auto& p : check.problems) all += "  " + p + "\n";
+    EXPECT_TRUE(check.problems.empty()) << check.problems.size() << " problems:\n" << all;
+  }
 }
 
 TEST(VisibilitySkeleton3D, RandomSoupsMatchBruteForce) {
   for (unsigned seed : {1u, 2u, 3u}) {
     SCOPED_TRACE(seed);
-    check_scene(skeleton_test::random_soup(seed, 5, 24), true, 10);
+    check_scene(skeleton_test::random_soup(seed, 5, 24), true, 10, true);
   }
 }
 
 TEST(VisibilitySkeleton3D, TetrahedraWithSharedEdgesMatchBruteForce) {
   for (unsigned seed : {4u, 5u}) {
     SCOPED_TRACE(seed);
-    check_scene(skeleton_test::random_tetrahedra(seed, 2, 30), true, 4);
+    check_scene(skeleton_test::random_tetrahedra(seed, 2, 30), true, 4, true);
   }
 }
 
@@ -182,7 +190,7 @@ TEST(VisibilitySkeleton3D, TwoBoxesMatchBruteForce) {
   Scene s;
   skeleton_test::add_box(s, {0, 0, 0}, {1, 1, 1}, "A");
   skeleton_test::add_box(s, {2.125, 0.25, 0.375}, {3.5, 1.5, 1.75}, "B");
-  check_scene(s, false, 20);
+  check_scene(s, false, 20, true);
 }
 
 TEST(VisibilitySkeleton3D, CoplanarFacesMatchBruteForce) {
@@ -190,7 +198,7 @@ TEST(VisibilitySkeleton3D, CoplanarFacesMatchBruteForce) {
   Scene s;
   skeleton_test::add_box(s, {0, 0, 0}, {1, 1, 1}, "A");
   skeleton_test::add_box(s, {2, 0, 0}, {3, 2, 1}, "B");
-  check_scene(s, false, 1);
+  check_scene(s, false, 1, false);
 }
 
 TEST(VisibilitySkeleton3D, PairSliceIsTheTableEntry) {
