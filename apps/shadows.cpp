@@ -1,6 +1,6 @@
 // `exactvis shadows SCENE --light SPEC [--receivers all|IDS] [-o mesh.vtp] [--ply F] [--json] [--png F]`:
 // the exact discontinuity mesh of area lights on receiver triangles (docs/cli.md "shadows", definitions in
-// docs/theory.md section 9).
+// docs/theory.md section 11).
 #include "apps/cli_util.hpp"
 #include "apps/command_registry.hpp"
 #include "events/eee_events.hpp"

@@ -1,6 +1,6 @@
 #pragma once
 // The backprojection of an area light at a point: the exact part of the light visible from the point
-// (docs/theory.md section 9, "Backprojection").
+// (docs/theory.md section 11, "Backprojection").
 //
 // The light is a set of scene triangles (events/light_source.hpp). A light point q is *visible* from p iff
 // the open segment (p, q) meets no closed scene triangle. The points hidden by one blocker T (p not in T's

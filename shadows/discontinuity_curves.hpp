@@ -1,5 +1,5 @@
 #pragma once
-// Discontinuity curves of an area light on receiver triangles (docs/theory.md section 9, "Curves").
+// Discontinuity curves of an area light on receiver triangles (docs/theory.md section 11, "Curves").
 //
 // From the light-restricted events (events/): an EV free interval of (V, E) with V a light vertex and E not a
 // light edge reaches, beyond E, its front object; with E a light edge and V not a light vertex, its back

@@ -1,6 +1,6 @@
 #pragma once
 // Exact 2D coordinates on a plane of the scene (a light triangle's or a receiver's plane), for the planar
-// Boolean operations and triangulations of the shadows module (docs/theory.md section 9).
+// Boolean operations and triangulations of the shadows module (docs/theory.md section 11).
 //
 // A plane with normal n is mapped to 2D by dropping its dominant coordinate k (|n_k| largest): the 2D point
 // of X is (X[k+1], X[k+2]) (indices mod 3), swapped when n_k < 0 so that the map keeps orientation (a polygon

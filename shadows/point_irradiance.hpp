@@ -1,6 +1,6 @@
 #pragma once
 // Unoccluded irradiance at a receiver point from the visible part of a Lambertian area light (docs/theory.md
-// section 9, "Irradiance"): Lambert's polygon-to-point form factor
+// section 11, "Irradiance"): Lambert's polygon-to-point form factor
 //   F = 1/(2 pi) | sum over boundary edges (v_i, v_j) of theta_ij * n . (r_i x r_j) / |r_i x r_j| |,
 // r = v - p, theta_ij the angle between r_i and r_j, n the receiver's unit normal, summed over the outer
 // loop and the holes of every visible piece (per light triangle, then added). The light has exitance 1

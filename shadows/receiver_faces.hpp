@@ -1,6 +1,6 @@
 #pragma once
 // The faces of a receiver cut by its discontinuity curves, and the conforming triangulation (docs/theory.md
-// section 9, "Faces and mesh").
+// section 11, "Faces and mesh").
 //
 // In the receiver's (u, v) frame, the triangle's three sides and every curve (EV and D0 segments; EEE
 // polylines through exact points of the conic) are inserted as constraints into a CGAL constrained Delaunay

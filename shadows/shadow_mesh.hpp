@@ -1,5 +1,5 @@
 #pragma once
-// The exact discontinuity mesh of area lights on receiver triangles (docs/theory.md section 9): per receiver,
+// The exact discontinuity mesh of area lights on receiver triangles (docs/theory.md section 11): per receiver,
 // its discontinuity curves (shadows/discontinuity_curves.hpp), the faces they cut and the conforming
 // triangulation (shadows/receiver_faces.hpp), each face classified umbra / penumbra / lit by the exact
 // backprojection at its sample point (shadows/backprojection.hpp) with the light fraction and irradiance
