@@ -47,8 +47,12 @@ TEST(ShadowMesh, TextbookUmbraAndPenumbraAreTheHandDerivedSquares) {
         if (rec.mesh.triangle_face[t] != static_cast<int>(fi)) continue;
         for (int v : rec.mesh.triangles[t]) {
           const auto p = f.to_3d(rec.mesh.vertices[v][0], rec.mesh.vertices[v][1]);
-          if (face.light_class == LightClass::Umbra) EXPECT_TRUE(p.x >= 3 && p.x <= 5 && p.y >= 3 && p.y <= 5);
-          if (face.light_class == LightClass::Penumbra) EXPECT_TRUE(p.x >= 1 && p.x <= 7 && p.y >= 1 && p.y <= 7);
+          if (face.light_class == LightClass::Umbra) {
+            EXPECT_TRUE(p.x >= 3 && p.x <= 5 && p.y >= 3 && p.y <= 5);
+          }
+          if (face.light_class == LightClass::Penumbra) {
+            EXPECT_TRUE(p.x >= 1 && p.x <= 7 && p.y >= 1 && p.y <= 7);
+          }
         }
       }
       // The face's fraction at its sample is the hand formula.
@@ -105,8 +109,12 @@ TEST(ShadowMesh, FaceClassesSurviveOracleLightSampling) {
           }
           const std::string where = "seed " + std::to_string(seed) + " face " + std::to_string(fi) +
                                     (a == 0 ? " sample" : " second point");
-          if (face.light_class == LightClass::Umbra) EXPECT_EQ(vis, 0) << where;
-          if (face.light_class == LightClass::Lit) EXPECT_EQ(vis, n) << where;
+          if (face.light_class == LightClass::Umbra) {
+            EXPECT_EQ(vis, 0) << where;
+          }
+          if (face.light_class == LightClass::Lit) {
+            EXPECT_EQ(vis, n) << where;
+          }
           if (a == 0 && face.light_class == LightClass::Penumbra) {
             // Both light triangles have equal area, so uniform per-triangle sampling is uniform on the light.
             const double f0 = face.fraction_value, sigma = std::sqrt(f0 * (1 - f0) / n);
@@ -147,8 +155,12 @@ int check_faces_with_oracle(const Scene& s, const ShadowOptions& opt, const Shad
         for (int m = 0; m < samples; ++m)
           vis += shadow_test::oracle_visible(
               s, p, shadow_test::oracle_uniform_point(s, opt.light[m % opt.light.size()], rng));
-        if (face.light_class == LightClass::Umbra) EXPECT_EQ(vis, 0) << "face " << fi;
-        if (face.light_class == LightClass::Lit) EXPECT_EQ(vis, samples) << "face " << fi;
+        if (face.light_class == LightClass::Umbra) {
+          EXPECT_EQ(vis, 0) << "face " << fi;
+        }
+        if (face.light_class == LightClass::Lit) {
+          EXPECT_EQ(vis, samples) << "face " << fi;
+        }
       }
       ++faces;
     }
