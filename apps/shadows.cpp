@@ -188,6 +188,8 @@ int run_shadows(const ShadowsCliOptions& o) {
     j["stats"] = {{"ev_events", res.stats.ev_events},
                   {"eee_events", res.stats.eee_events},
                   {"backprojections", res.stats.backprojections},
+                  {"seconds_ev", res.stats.seconds_ev},
+                  {"seconds_eee", res.stats.seconds_eee},
                   {"seconds_events", res.stats.seconds_events},
                   {"seconds_receivers", res.stats.seconds_receivers}};
     std::cout << j.dump(2) << "\n";

@@ -89,6 +89,19 @@ Backprojection backproject(const Scene& scene, const TriangleIndex& index, const
       if (orient3d(t[0], t[1], t[2], lt[0]) == Sign::Zero && orient3d(t[0], t[1], t[2], lt[1]) == Sign::Zero &&
           orient3d(t[0], t[1], t[2], lt[2]) == Sign::Zero)
         continue;  // T in the light's plane: the open segment (p, q) ends before it
+      // Exact sign pre-tests (filtered): the light triangle entirely on p's side of T's plane, or entirely
+      // outside one of the cone's side planes, is not hidden by T.
+      if (orient3d(t[0], t[1], t[2], lt[0]) == sp && orient3d(t[0], t[1], t[2], lt[1]) == sp &&
+          orient3d(t[0], t[1], t[2], lt[2]) == sp)
+        continue;
+      bool outside = false;
+      for (int k = 0; k < 3 && !outside; ++k) {
+        const Sign inner = orient3d(p, t[k], t[(k + 1) % 3], t[(k + 2) % 3]);
+        outside = orient3d(p, t[k], t[(k + 1) % 3], lt[0]) == -inner &&
+                  orient3d(p, t[k], t[(k + 1) % 3], lt[1]) == -inner &&
+                  orient3d(p, t[k], t[(k + 1) % 3], lt[2]) == -inner;
+      }
+      if (outside) continue;
       region::Polygon3 poly = light_poly;
       // Beyond T's plane (closed), inside the three planes through p and T's edges (closed).
       poly = region::clip_polygon(poly, oriented_plane(t[0], t[1], t[2], p).flipped());
@@ -97,10 +110,21 @@ Backprojection backproject(const Scene& scene, const TriangleIndex& index, const
       if (region::is_degenerate(poly)) continue;
       Polygon2 h2 = to_polygon2(part.chart, poly);
       if (h2.size() < 3 || h2.area() == 0) continue;
+      // Fast path: one cone covering the whole light triangle (the hidden polygon is a subset of the
+      // triangle, so equal area means equal sets). It alone is the proof.
+      const bool covers = from_planar_ft(h2.area()) == part.area_2d;
+      if (covers) {
+        hidden.clear();
+        hidden_by.clear();
+      }
       hidden.push_back(std::move(h2));
       hidden_by.push_back(scene.triangles[ti].id);
+      if (covers) break;
     }
-    if (hidden.empty()) {
+    if (hidden.size() == 1 && from_planar_ft(hidden.front().area()) == part.area_2d) {
+      part.visible_area_2d = 0;
+      blockers.insert(hidden_by.front());
+    } else if (hidden.empty()) {
       part.pieces.push_back({to_polygon3(part.chart, light2), {}});
       part.visible_area_2d = part.area_2d;
     } else {

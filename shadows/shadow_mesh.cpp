@@ -34,7 +34,11 @@ ShadowResult compute_shadows(const Scene& scene, const ShadowOptions& options) {
   eeo.progress = options.progress;
   eeo.parallel = options.parallel;
   const EvResult ev = enumerate_ev_events(scene, evo);
+  const auto after_ev = std::chrono::steady_clock::now();
   const EeeResult eee = enumerate_eee_events(scene, eeo);
+  const auto after_eee = std::chrono::steady_clock::now();
+  res.stats.seconds_ev = std::chrono::duration<double>(after_ev - start).count();
+  res.stats.seconds_eee = std::chrono::duration<double>(after_eee - after_ev).count();
   res.stats.ev_events = ev.events.size();
   res.stats.eee_events = eee.events.size();
   auto curves = event_curves(scene, index, options.light, ev, eee, receivers, options.eee);

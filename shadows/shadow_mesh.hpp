@@ -49,7 +49,8 @@ struct ReceiverShadows {
 struct ShadowStats {
   std::uint64_t ev_events = 0, eee_events = 0;
   std::uint64_t backprojections = 0;
-  double seconds_events = 0, seconds_receivers = 0;
+  double seconds_events = 0, seconds_receivers = 0;  // events: EV + EEE enumeration + curves on receivers
+  double seconds_ev = 0, seconds_eee = 0;
 };
 
 struct ShadowResult {

@@ -24,6 +24,14 @@ inline void add_object(Scene& s, const std::string& name, const std::vector<Poin
   s.faces_read = static_cast<std::int64_t>(s.triangles.size());
 }
 
+// Indices of the triangles of the object named `name`.
+inline std::vector<int> object_triangles(const Scene& s, const std::string& name) {
+  std::vector<int> out;
+  for (std::size_t i = 0; i < s.triangles.size(); ++i)
+    if (s.objects[s.triangles[i].object].name == name) out.push_back(static_cast<int>(i));
+  return out;
+}
+
 inline void add_quad(Scene& s, const std::string& name, const std::array<Point3, 4>& q) {
   add_object(s, name, {q[0], q[1], q[2], q[3]}, {{0, 1, 2}, {0, 2, 3}});
 }

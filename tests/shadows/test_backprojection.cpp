@@ -12,12 +12,7 @@ namespace {
 
 using shadow_test::oracle_point;
 
-std::vector<int> object_triangles(const Scene& s, const std::string& name) {
-  std::vector<int> out;
-  for (std::size_t i = 0; i < s.triangles.size(); ++i)
-    if (s.objects[s.triangles[i].object].name == name) out.push_back(static_cast<int>(i));
-  return out;
-}
+using shadow_test::object_triangles;
 
 // Crossing-parity membership in the 2D chart; nullopt when q is on a boundary edge (measure zero).
 std::optional<bool> in_visible(const PlaneChart& ch, const std::vector<VisiblePolygon>& pieces, const Vec3<Exact>& q) {

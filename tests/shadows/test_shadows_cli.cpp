@@ -52,8 +52,12 @@ TEST(ShadowsCli, JsonHasTheShapeOfTheIssue) {
       ASSERT_TRUE(f["light_fraction"].is_number());
       ASSERT_TRUE(f["irradiance"].is_number());
       (cls == "umbra" ? umbra : cls == "penumbra" ? penumbra : lit) += f["area"].get<double>();
-      if (cls == "umbra") EXPECT_EQ(f["light_fraction"].get<double>(), 0.0);
-      if (cls == "lit") EXPECT_EQ(f["light_fraction"].get<double>(), 1.0);
+      if (cls == "umbra") {
+        EXPECT_EQ(f["light_fraction"].get<double>(), 0.0);
+      }
+      if (cls == "lit") {
+        EXPECT_EQ(f["light_fraction"].get<double>(), 1.0);
+      }
     }
   }
   EXPECT_NEAR(umbra, 4, 1e-12);

@@ -1,0 +1,85 @@
+// Discontinuity meshing growth (docs/performance.md "shadows"): generated scenes of growing size with one
+// square area light under the ceiling (room) or above the centre (town); per size the light-restricted event
+// enumeration (the baseline, measured in the same run), the per-receiver work (curves, triangulation, one
+// exact backprojection per face, optionally per mesh vertex), counts and growth exponents.
+//
+// Usage: bench_shadows [--kind room|town] [--sizes 250,500,1000] [--seed 1] [--vertex-irradiance]
+//                      [--threads N (0: all cores)]
+#include "bench/bench_util.hpp"
+#include "events/light_source.hpp"
+#include "kernel/scene_generators.hpp"
+#include "shadows/shadow_mesh.hpp"
+
+#include <tbb/global_control.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <memory>
+#include <string>
+
+int main(int argc, char** argv) {
+  std::string kind = "room", sizes = "250,500,1000,2000";
+  std::uint64_t seed = 1;
+  bool vertex_irradiance = false;
+  int threads = 0;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a == "--kind" && i + 1 < argc) kind = argv[++i];
+    else if (a == "--sizes" && i + 1 < argc) sizes = argv[++i];
+    else if (a == "--seed" && i + 1 < argc) seed = std::stoull(argv[++i]);
+    else if (a == "--threads" && i + 1 < argc) threads = std::stoi(argv[++i]);
+    else if (a == "--vertex-irradiance") vertex_irradiance = true;
+    else {
+      std::fprintf(stderr, "usage: bench_shadows [--kind room|town] [--sizes a,b,c] [--seed S] [--vertex-irradiance] [--threads N]\n");
+      return 2;
+    }
+  }
+  std::unique_ptr<tbb::global_control> gc;
+  if (threads > 0) gc = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, threads);
+  std::printf("kind %s, seed %llu, vertex irradiance %s\n", kind.c_str(), static_cast<unsigned long long>(seed),
+              vertex_irradiance ? "yes" : "no");
+  std::printf("%8s %9s %7s %7s %5s %6s %7s %6s %6s %8s %8s %9s %8s %7s\n", "tris", "receivers", "EVcurv", "EEEcurv",
+              "D0", "faces", "umbra", "ev_s", "eee_s", "events_s", "recv_s", "ms/recv", "recv/ev", "growth");
+  double prev_n = 0, prev_t = 0;
+  for (const auto& item : exactvis::bench::split(sizes)) {
+    const long n = std::stol(item);
+    exactvis::Scene scene = exactvis::generate_scene(kind, n, seed);
+    const exactvis::Box3 b = exactvis::bounding_box(scene);
+    const double cx = (b.lo.x + b.hi.x) / 2, cy = (b.lo.y + b.hi.y) / 2;
+    const double sx = (b.hi.x - b.lo.x) * 0.05, sy = (b.hi.y - b.lo.y) * 0.05;
+    const double z = kind == "room" ? b.hi.z - 0.02 * (b.hi.z - b.lo.z) : b.hi.z + 0.5 * (b.hi.z - b.lo.z);
+    const exactvis::LightSource light = exactvis::append_light_polygon(
+        scene, {{cx - sx, cy - sy, z}, {cx + sx, cy - sy, z}, {cx + sx, cy + sy, z}, {cx - sx, cy + sy, z}});
+    exactvis::shadows::ShadowOptions opt;
+    opt.light = light.triangles;
+    opt.vertex_irradiance = vertex_irradiance;
+    const double t0 = exactvis::bench::now();
+    const auto res = exactvis::shadows::compute_shadows(scene, opt);
+    const double total = exactvis::bench::now() - t0;
+    std::uint64_t ev = 0, eee = 0, d0 = 0, faces = 0, umbra = 0;
+    for (const auto& r : res.receivers) {
+      for (const auto& c : r.curves) {
+        if (c.order == 0) ++d0;
+        else if (c.kind == exactvis::shadows::DiscontinuityCurve::Kind::EV) ++ev;
+        else ++eee;
+      }
+      for (const auto& f : r.faces) {
+        ++faces;
+        umbra += f.light_class == exactvis::shadows::LightClass::Umbra;
+      }
+    }
+    const double growth = prev_n > 0 ? std::log(total / prev_t) / std::log(n / prev_n) : 0;
+    std::printf("%8ld %9zu %7llu %7llu %5llu %6llu %7llu %6.2f %6.2f %8.2f %8.2f %9.2f %8.2f %7s\n", n,
+                res.receivers.size(), (unsigned long long)ev, (unsigned long long)eee, (unsigned long long)d0,
+                (unsigned long long)faces, (unsigned long long)umbra, res.stats.seconds_ev, res.stats.seconds_eee,
+                res.stats.seconds_events, res.stats.seconds_receivers,
+                1000 * res.stats.seconds_receivers / std::max<std::size_t>(1, res.receivers.size()),
+                res.stats.seconds_receivers / std::max(1e-9, res.stats.seconds_events),
+                prev_n > 0 ? std::to_string(growth).substr(0, 4).c_str() : "-");
+    std::fflush(stdout);
+    prev_n = static_cast<double>(n);
+    prev_t = total;
+  }
+  return 0;
+}
