@@ -136,12 +136,39 @@ ExteriorTriangle ExteriorClassifier::classify(std::int64_t t, VisibilityStats* s
     }
   }
 
+  // Stage 2b: the sides of T its own closed shell blocks (Lemma 5.6.5).
+  std::optional<OwnShellSides> sides;
+  if (shells_) sides = own_shell_sides(scene_, index_, scene_box_, *shells_, t);
+  if (sides && sides->blocked[0] && sides->blocked[1]) {
+    out.visible = false;
+    out.stage = ExteriorStage::Enclosure;
+    out.sides = std::move(*sides);
+    return out;
+  }
+
   if (auto w = propose(first_round, options_.rays)) return accept(*w, ExteriorStage::Proposal);
 
-  // Stage 3 (Theorem 5.6.1): T is exterior visible iff it is visible from some face of the enclosing box.
+  // Stage 3 (Theorem 5.6.1): T is exterior visible iff it is visible from some face of the enclosing box;
+  // when one side of T is blocked, from the parts of the faces on the other side.
+  std::optional<Plane3> open_side;
+  if (sides && (sides->blocked[0] || sides->blocked[1])) {
+    const Plane3 plane = plane_through(tri[0], tri[1], tri[2]);
+    open_side = sides->blocked[0] ? plane.flipped() : plane;
+  }
   for (int axis = 0; axis < 3; ++axis)
     for (const bool high : {false, true}) {
-      const VisibilityResult r = visible_from_polygon(scene_, finder_, box_face(box_, axis, high), t, options_.query);
+      Polygon3 source = box_face(box_, axis, high);
+      if (open_side) {
+        source = clip_polygon(source, *open_side);
+        // Consecutive repeats (a vertex on the plane) are dropped; a part of zero area sees nothing.
+        Polygon3 clean;
+        for (const RationalPoint3& p : source)
+          if (clean.empty() || !(clean.back() == p)) clean.push_back(p);
+        while (clean.size() > 1 && clean.front() == clean.back()) clean.pop_back();
+        if (is_degenerate(clean)) continue;
+        source = std::move(clean);
+      }
+      const VisibilityResult r = visible_from_polygon(scene_, finder_, source, t, options_.query);
       if (stats) accumulate(*stats, r.stats);
       if (!r.visible) continue;
       const ExteriorWitness w = witness_from_segment(r.witness->p, r.witness->q);
