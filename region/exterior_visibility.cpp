@@ -24,6 +24,16 @@ glm::vec3 to_float(const RationalPoint3& p) {
           static_cast<float>(CGAL::to_double(p.z))};
 }
 
+// The nearest doubles (exact as rationals); a component beyond the double range stays as it is.
+RationalPoint3 nearest_doubles(const RationalPoint3& p) {
+  RationalPoint3 out = p;
+  for (int k = 0; k < 3; ++k) {
+    const double x = CGAL::to_double(p[k]);
+    if (std::isfinite(x)) out[k] = Exact(x);
+  }
+  return out;
+}
+
 // A per-triangle generator: the same proposals whatever the thread that runs the triangle.
 constexpr int kFirstRound = 32;  // proposals before the enclosure test
 
@@ -113,6 +123,11 @@ ExteriorTriangle ExteriorClassifier::classify(std::int64_t t, VisibilityStats* s
         w.q = random_interior_point(poly, rng);
         w.d = random_direction(rng);
       }
+      // Proposals in doubles where possible, so that an accepted witness needs no rounding (one exact check).
+      const RationalPoint3 qd = nearest_doubles(w.q);
+      if (!(qd == w.q) && in_triangle_relative_interior(qd, tri)) w.q = qd;
+      const Vec3<Exact> dd = nearest_doubles(w.d);
+      if (CGAL::sign(dd.x) != 0 || CGAL::sign(dd.y) != 0 || CGAL::sign(dd.z) != 0) w.d = dd;
       const glm::vec3 o = to_float(w.q), d = to_float(w.d);
       if (!(glm::dot(d, d) > 0) || !std::isfinite(glm::dot(d, d))) continue;
       if (counts) ++counts->proposals_cast;
