@@ -185,7 +185,7 @@ TEST(ExteriorVisibility, AnswersDoNotDependOnThreads) {
 // Fixed-seed property test: an open box (no lid) with random triangles inside and around it. The three
 // stage configurations agree, and the oracle confirms every answer.
 TEST(ExteriorVisibility, RandomScenesAgreeWithOracleAndAcrossStages) {
-  for (unsigned seed = 1; seed <= 4; ++seed) {
+  for (unsigned seed = 1; seed <= 2; ++seed) {
     std::mt19937_64 rng(seed);
     auto coord = [&] { return static_cast<double>(static_cast<int>(rng() % 65)) / 64.0; };
     ModelBuilder b;
