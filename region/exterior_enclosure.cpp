@@ -3,6 +3,7 @@
 #include "kernel/ray_blocker.hpp"
 #include "kernel/segment_triangle_intersection.hpp"
 #include "region/convex_polygon_3.hpp"
+#include "region/exterior_witness.hpp"
 #include "util/union_find.hpp"
 
 #include <algorithm>
@@ -178,13 +179,7 @@ std::optional<OwnShellSides> own_shell_sides(const Scene& scene, const TriangleI
   if (!shells.closed(own)) return std::nullopt;
   const SceneTriangle& t = scene.triangles[static_cast<std::size_t>(triangle_index)];
   const auto tri = triangle_points(scene, triangle_index);
-  auto coplanar = [&](std::int64_t o) {
-    const SceneTriangle& ot = scene.triangles[static_cast<std::size_t>(o)];
-    for (int k = 0; k < 3; ++k)
-      if (orient3d(scene.corner(t, 0), scene.corner(t, 1), scene.corner(t, 2), scene.corner(ot, k)) != Sign::Zero)
-        return false;
-    return true;
-  };
+  auto coplanar = [&](std::int64_t o) { return coplanar_triangles(scene, triangle_index, o); };
   // No other non-coplanar triangle of the shell may meet relint T (Lemma 5.6.5).
   for (const std::int64_t o : index.triangles_meeting_triangle(scene.corner(t, 0), scene.corner(t, 1), scene.corner(t, 2)))
     if (o != triangle_index && shells.shell_of(o) == own && !coplanar(o) &&

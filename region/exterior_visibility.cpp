@@ -24,25 +24,7 @@ glm::vec3 to_float(const RationalPoint3& p) {
           static_cast<float>(CGAL::to_double(p.z))};
 }
 
-// The nearest doubles (exact as rationals); a component beyond the double range stays as it is.
-RationalPoint3 nearest_doubles(const RationalPoint3& p) {
-  RationalPoint3 out = p;
-  for (int k = 0; k < 3; ++k) {
-    const double x = CGAL::to_double(p[k]);
-    if (std::isfinite(x)) out[k] = Exact(x);
-  }
-  return out;
-}
-
-// A per-triangle generator: the same proposals whatever the thread that runs the triangle.
 constexpr int kFirstRound = 32;  // proposals before the enclosure test
-
-std::uint64_t mix(std::uint64_t seed, std::uint64_t i) {
-  std::uint64_t z = seed + 0x9e3779b97f4a7c15ULL * (i + 1);
-  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-  return z ^ (z >> 31);
-}
 
 // A random direction with double components (exact as rationals): uniform on the sphere up to rounding
 // (rejection from the cube), never zero.
@@ -108,7 +90,7 @@ ExteriorTriangle ExteriorClassifier::classify(std::int64_t t, VisibilityStats* s
 
   // Stage 1: Embree proposals, each re-checked exactly (a valid witness proves positive measure by itself):
   // a first round of kFirstRound rays, the rest after the enclosure test (for triangles in deep pockets).
-  std::mt19937_64 rng(mix(options_.seed, static_cast<std::uint64_t>(t)));
+  std::mt19937_64 rng(mix_seed(options_.seed, static_cast<std::uint64_t>(t)));
   const Vec3<Exact> n = cross(tri[1] - tri[0], tri[2] - tri[0]);
   const RationalPoint3 c = centroid(poly);
   const std::int64_t ignore[1] = {t};
