@@ -5,7 +5,8 @@
 // For each model: triangles, kept, removed, how many triangles each stage decided (proposal / enclosure /
 // query visible / query hidden), wall-clock time of the exact run (index and BVH included), then the sampler
 // run with its default views and resolution and, when the exact run took longer, with views scaled up to about
-// the same time; for each sampler run: kept, and its mistakes against the exact answer (removed but visible,
+// the same time; cpu s is the process CPU time of the exact run (all threads; the machine is shared, so
+// wall-clock times vary with other load); for each sampler run: kept, and its mistakes against the exact answer (removed but visible,
 // kept but hidden). With --slow S the exact run goes triangle by triangle on one thread and lists every
 // triangle that took longer than S seconds (its stage), to find where time goes.
 #include "bench/bench_util.hpp"
@@ -16,6 +17,7 @@
 #include "region/exterior_visibility.hpp"
 
 #include <algorithm>
+#include <ctime>
 #include <cstdio>
 #include <cstring>
 #include <string>
@@ -70,11 +72,12 @@ int main(int argc, char** argv) {
     else if (!std::strcmp(argv[i], "--no-sampled")) sampled = false;
     else models.push_back(argv[i]);
   }
-  std::printf("%-28s %9s %9s %8s %9s %9s %9s %9s %9s | %s\n", "model", "triangles", "kept", "removed", "proposal",
-              "enclosure", "q-visible", "q-hidden", "exact s", "sampled: views kept missed wrongly-kept s");
+  std::printf("%-28s %9s %9s %8s %9s %9s %9s %9s %9s %9s | %s\n", "model", "triangles", "kept", "removed", "proposal",
+              "enclosure", "q-visible", "q-hidden", "exact s", "cpu s", "sampled: views kept missed wrongly-kept s");
   for (const std::string& path : models) {
     try {
       const double t0 = bench::now();
+      const std::clock_t c0 = std::clock();
       const Scene scene = load_scenes({path});
       const TriangleIndex index(scene);
       const FloatRayCaster caster(scene);
@@ -107,11 +110,12 @@ int main(int argc, char** argv) {
         c = ev.counts;
       }
       const double exact_seconds = bench::now() - t0;
+      const double exact_cpu = static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC;
       const std::string name = path.substr(path.find_last_of('/') + 1);
-      std::printf("%-28s %9zu %9lld %8lld %9lld %9lld %9lld %9lld %9.2f |", name.c_str(), scene.triangles.size(),
+      std::printf("%-28s %9zu %9lld %8lld %9lld %9lld %9lld %9lld %9.2f %9.2f |", name.c_str(), scene.triangles.size(),
                   static_cast<long long>(c.visible), static_cast<long long>(c.hidden),
                   static_cast<long long>(c.by_proposal), static_cast<long long>(c.by_enclosure),
-                  static_cast<long long>(c.by_query_visible), static_cast<long long>(c.by_query_hidden), exact_seconds);
+                  static_cast<long long>(c.by_query_visible), static_cast<long long>(c.by_query_hidden), exact_seconds, exact_cpu);
       if (sampled) {
         std::vector<SamplerRow> rows{run_sampler(scene, caster, kept, 256, threads)};
         if (rows[0].seconds < 0.5 * exact_seconds) {

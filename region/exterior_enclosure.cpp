@@ -3,9 +3,11 @@
 #include "kernel/ray_blocker.hpp"
 #include "kernel/segment_triangle_intersection.hpp"
 #include "region/convex_polygon_3.hpp"
+#include "region/exterior_witness.hpp"
 #include "util/union_find.hpp"
 
 #include <algorithm>
+#include <functional>
 #include <array>
 #include <limits>
 #include <numeric>
@@ -46,13 +48,15 @@ Box3 triangle_box(const Scene& scene, const SceneTriangle& t) {
 
 // Crossing parity of the ray from q along d with the shell's triangles: the number of crossings, or -1 when
 // the ray meets the shell anywhere but in a transversal crossing of a relative interior (not generic).
+// Triangles for which skip(c) is true are left out (the caller knows the ray cannot meet them).
 int crossings(const Scene& scene, const TriangleIndex& index, const Box3& scene_box, const SceneShells& shells,
-              int shell, const RationalPoint3& q, const Vec3<Exact>& d) {
+              int shell, const RationalPoint3& q, const Vec3<Exact>& d,
+              const std::function<bool(std::int64_t)>& skip = nullptr) {
   const RaySpan span = ray_span(scene_box, q, d);
   int count = 0;
   bool generic = true;
   visit_ray_candidates(index, span, [&](std::int64_t c) {
-    if (shells.shell_of(c) != shell) return true;
+    if (shells.shell_of(c) != shell || (skip && skip(c))) return true;
     const auto o = triangle_points(scene, c);
     // q is off the shell (the caller checked relint T against it), so the closed segment meets o iff the
     // ray does at some s > 0; far is beyond every triangle.
@@ -167,6 +171,44 @@ std::optional<EnclosureProof> enclosing_shell(const Scene& scene, const Triangle
     }
   }
   return std::nullopt;
+}
+
+std::optional<OwnShellSides> own_shell_sides(const Scene& scene, const TriangleIndex& index, const Box3& scene_box,
+                                             const SceneShells& shells, std::int64_t triangle_index) {
+  const int own = shells.shell_of(triangle_index);
+  if (!shells.closed(own)) return std::nullopt;
+  const SceneTriangle& t = scene.triangles[static_cast<std::size_t>(triangle_index)];
+  const auto tri = triangle_points(scene, triangle_index);
+  auto coplanar = [&](std::int64_t o) { return coplanar_triangles(scene, triangle_index, o); };
+  // No other non-coplanar triangle of the shell may meet relint T (Lemma 5.6.5).
+  for (const std::int64_t o : index.triangles_meeting_triangle(scene.corner(t, 0), scene.corner(t, 1), scene.corner(t, 2)))
+    if (o != triangle_index && shells.shell_of(o) == own && !coplanar(o) &&
+        meets_relative_interior(triangle_points(scene, o), tri))
+      return std::nullopt;
+  OwnShellSides out;
+  out.q = centroid(Polygon3{tri[0], tri[1], tri[2]});
+  const Vec3<Exact> n = cross(tri[1] - tri[0], tri[2] - tri[0]);
+  // T and the triangles coplanar with it are never met by a ray leaving plane(T).
+  auto skip = [&](std::int64_t o) { return o == triangle_index || coplanar(o); };
+  std::mt19937_64 rng(0x51ed270b27c8e0d1ULL ^ static_cast<std::uint64_t>(triangle_index));
+  for (int side = 0; side < 2; ++side) {
+    bool decided = false;
+    for (int attempt = 0; attempt < 8 && !decided; ++attempt) {
+      auto comp = [&] { return Exact(static_cast<long>(rng() % (1u << 21)) - (1L << 20)); };
+      Vec3<Exact> d{comp(), comp(), comp()};
+      const int s = CGAL::sign(dot(d, n));
+      if (s == 0) continue;
+      if ((s > 0) != (side == 0)) d = Vec3<Exact>{-d.x, -d.y, -d.z};
+      const int count = crossings(scene, index, scene_box, shells, own, out.q, d, skip);
+      if (count < 0) continue;
+      out.d[side] = d;
+      out.crossings[side] = count;
+      out.blocked[side] = count % 2 == 1;
+      decided = true;
+    }
+    if (!decided) return std::nullopt;
+  }
+  return out;
 }
 
 }  // namespace exactvis::region

@@ -58,6 +58,25 @@ struct EnclosureProof {
 std::optional<EnclosureProof> enclosing_shell(const Scene& scene, const TriangleIndex& index, const Box3& scene_box,
                                               const SceneShells& shells, std::int64_t triangle_index);
 
+// Which sides of a triangle T of a closed shell Z its own shell blocks (docs/theory.md, Lemma 5.6.5): side 0 is
+// the side the normal (b - a) x (c - a) points to, side 1 the other. When no triangle of Z other than T and
+// not coplanar with T meets relint T, the points just off relint T on one side all have the same crossing
+// parity with Z; odd means every ray from relint T into that side meets Z (blocked). The certificate per side:
+// the ray from q (the centroid) along d[side] crosses crossings[side] triangles of Z (T and the triangles
+// coplanar with T left out), each transversally through its interior.
+struct OwnShellSides {
+  RationalPoint3 q;
+  Vec3<Exact> d[2];
+  int crossings[2] = {0, 0};
+  bool blocked[2] = {false, false};
+};
+
+// Input: as enclosing_shell. Output: the sides, or std::nullopt when T's shell is not closed, another
+// non-coplanar triangle of it meets relint T, or no generic ray was found (8 directions per side). Exact.
+// Cost: the triangles meeting T plus two rays' candidates.
+std::optional<OwnShellSides> own_shell_sides(const Scene& scene, const TriangleIndex& index, const Box3& scene_box,
+                                             const SceneShells& shells, std::int64_t triangle_index);
+
 // True iff the closed triangle `other` meets the relative interior of the non-degenerate triangle `t`.
 // Exact (clipping `other` by plane(t) and by the planes through t's edges, then one relative-interior test).
 bool meets_relative_interior(const std::array<RationalPoint3, 3>& other, const std::array<RationalPoint3, 3>& t);

@@ -1,6 +1,7 @@
 #include "region/exterior_sampled.hpp"
 
 #include "region/cell_visibility.hpp"
+#include "region/exterior_witness.hpp"
 
 #include <glm/geometric.hpp>
 #include <tbb/parallel_for.h>
@@ -33,13 +34,6 @@ double radical_inverse2(std::uint32_t i) {
 }
 
 double frac(double x) { return x - std::floor(x); }
-
-std::uint64_t mix(std::uint64_t seed, std::uint64_t i) {
-  std::uint64_t z = seed + 0x9e3779b97f4a7c15ULL * (i + 1);
-  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-  return z ^ (z >> 31);
-}
 
 double unit(std::mt19937_64& rng) { return std::ldexp(static_cast<double>(rng() >> 11), -53); }
 
@@ -76,7 +70,7 @@ SampledExterior sampled_exterior_visibility(const Scene& scene, const FloatRayCa
   const double bound_radius = std::max(0.5 * glm::length(hi - lo), 1e-300);
   const double camera_radius = std::max(1.5 * extent, 1.01 * bound_radius);
   const double tan_half = std::tan(std::asin(std::min(1.0, bound_radius / camera_radius)));
-  std::mt19937_64 rng(mix(options.seed, 0));
+  std::mt19937_64 rng(mix_seed(options.seed, 0));
   const double rot_u = unit(rng), rot_v = unit(rng);
   const int R = options.resolution;
 
@@ -111,7 +105,7 @@ SampledExterior sampled_exterior_visibility(const Scene& scene, const FloatRayCa
         const glm::dvec3 A(scene.corner(t, 0).x, scene.corner(t, 0).y, scene.corner(t, 0).z);
         const glm::dvec3 B(scene.corner(t, 1).x, scene.corner(t, 1).y, scene.corner(t, 1).z);
         const glm::dvec3 C(scene.corner(t, 2).x, scene.corner(t, 2).y, scene.corner(t, 2).z);
-        std::mt19937_64 trng(mix(options.seed, i + 1));
+        std::mt19937_64 trng(mix_seed(options.seed, i + 1));
         const double ru = unit(trng), rv = unit(trng), du = unit(trng), dv = unit(trng);
         const std::int64_t ignore[1] = {static_cast<std::int64_t>(i)};
         std::int64_t cast = 0;

@@ -24,15 +24,7 @@ glm::vec3 to_float(const RationalPoint3& p) {
           static_cast<float>(CGAL::to_double(p.z))};
 }
 
-// A per-triangle generator: the same proposals whatever the thread that runs the triangle.
 constexpr int kFirstRound = 32;  // proposals before the enclosure test
-
-std::uint64_t mix(std::uint64_t seed, std::uint64_t i) {
-  std::uint64_t z = seed + 0x9e3779b97f4a7c15ULL * (i + 1);
-  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-  return z ^ (z >> 31);
-}
 
 // A random direction with double components (exact as rationals): uniform on the sphere up to rounding
 // (rejection from the cube), never zero.
@@ -98,7 +90,7 @@ ExteriorTriangle ExteriorClassifier::classify(std::int64_t t, VisibilityStats* s
 
   // Stage 1: Embree proposals, each re-checked exactly (a valid witness proves positive measure by itself):
   // a first round of kFirstRound rays, the rest after the enclosure test (for triangles in deep pockets).
-  std::mt19937_64 rng(mix(options_.seed, static_cast<std::uint64_t>(t)));
+  std::mt19937_64 rng(mix_seed(options_.seed, static_cast<std::uint64_t>(t)));
   const Vec3<Exact> n = cross(tri[1] - tri[0], tri[2] - tri[0]);
   const RationalPoint3 c = centroid(poly);
   const std::int64_t ignore[1] = {t};
@@ -113,6 +105,11 @@ ExteriorTriangle ExteriorClassifier::classify(std::int64_t t, VisibilityStats* s
         w.q = random_interior_point(poly, rng);
         w.d = random_direction(rng);
       }
+      // Proposals in doubles where possible, so that an accepted witness needs no rounding (one exact check).
+      const RationalPoint3 qd = nearest_doubles(w.q);
+      if (!(qd == w.q) && in_triangle_relative_interior(qd, tri)) w.q = qd;
+      const Vec3<Exact> dd = nearest_doubles(w.d);
+      if (CGAL::sign(dd.x) != 0 || CGAL::sign(dd.y) != 0 || CGAL::sign(dd.z) != 0) w.d = dd;
       const glm::vec3 o = to_float(w.q), d = to_float(w.d);
       if (!(glm::dot(d, d) > 0) || !std::isfinite(glm::dot(d, d))) continue;
       if (counts) ++counts->proposals_cast;
@@ -136,12 +133,39 @@ ExteriorTriangle ExteriorClassifier::classify(std::int64_t t, VisibilityStats* s
     }
   }
 
+  // Stage 2b: the sides of T its own closed shell blocks (Lemma 5.6.5).
+  std::optional<OwnShellSides> sides;
+  if (shells_) sides = own_shell_sides(scene_, index_, scene_box_, *shells_, t);
+  if (sides && sides->blocked[0] && sides->blocked[1]) {
+    out.visible = false;
+    out.stage = ExteriorStage::Enclosure;
+    out.sides = std::move(*sides);
+    return out;
+  }
+
   if (auto w = propose(first_round, options_.rays)) return accept(*w, ExteriorStage::Proposal);
 
-  // Stage 3 (Theorem 5.6.1): T is exterior visible iff it is visible from some face of the enclosing box.
+  // Stage 3 (Theorem 5.6.1): T is exterior visible iff it is visible from some face of the enclosing box;
+  // when one side of T is blocked, from the parts of the faces on the other side.
+  std::optional<Plane3> open_side;
+  if (sides && (sides->blocked[0] || sides->blocked[1])) {
+    const Plane3 plane = plane_through(tri[0], tri[1], tri[2]);
+    open_side = sides->blocked[0] ? plane.flipped() : plane;
+  }
   for (int axis = 0; axis < 3; ++axis)
     for (const bool high : {false, true}) {
-      const VisibilityResult r = visible_from_polygon(scene_, finder_, box_face(box_, axis, high), t, options_.query);
+      Polygon3 source = box_face(box_, axis, high);
+      if (open_side) {
+        source = clip_polygon(source, *open_side);
+        // Consecutive repeats (a vertex on the plane) are dropped; a part of zero area sees nothing.
+        Polygon3 clean;
+        for (const RationalPoint3& p : source)
+          if (clean.empty() || !(clean.back() == p)) clean.push_back(p);
+        while (clean.size() > 1 && clean.front() == clean.back()) clean.pop_back();
+        if (is_degenerate(clean)) continue;
+        source = std::move(clean);
+      }
+      const VisibilityResult r = visible_from_polygon(scene_, finder_, source, t, options_.query);
       if (stats) accumulate(*stats, r.stats);
       if (!r.visible) continue;
       const ExteriorWitness w = witness_from_segment(r.witness->p, r.witness->q);

@@ -8,7 +8,9 @@
 //      the witness (it proves positive measure by itself, Lemma 5.6.2). Triangles on the convex hull are
 //      accepted here by their first or second ray (Corollary 5.6.3). A first round of 32 rays runs before
 //      stage 2, the remaining ones (up to ExteriorOptions::rays) after it.
-//   2. enclosure: a closed shell of the scene around T (region/exterior_enclosure.hpp) proves T hidden.
+//   2. enclosure: a closed shell of the scene around T (region/exterior_enclosure.hpp) proves T hidden, and so
+//      does T's own closed shell when it blocks both sides of T (Lemma 5.6.5); one blocked side restricts
+//      stage 3 to the other side.
 //   3. the exact from-region query (region/from_region_visibility.hpp) of T from each face of a box strictly
 //      enclosing the scene (Theorem 5.6.1): visible with a witness segment, which becomes the escaping ray,
 //      or hidden (no face sees it).
@@ -47,7 +49,8 @@ struct ExteriorTriangle {
   bool visible = false;
   ExteriorStage stage = ExteriorStage::QueryHidden;
   std::optional<ExteriorWitness> witness;  // when visible (passes check_exterior_witness)
-  std::optional<EnclosureProof> enclosure;  // when stage == Enclosure
+  std::optional<EnclosureProof> enclosure;  // when stage == Enclosure by another shell
+  std::optional<OwnShellSides> sides;       // when stage == Enclosure by T's own shell (both sides blocked)
 };
 
 struct ExteriorCounts {

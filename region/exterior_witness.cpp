@@ -4,22 +4,34 @@
 #include "kernel/segment_triangle_intersection.hpp"
 #include "region/convex_polygon_3.hpp"
 
-namespace exactvis::region {
-namespace {
+#include <cmath>
 
-bool coplanar_with(const Scene& scene, const SceneTriangle& t, const SceneTriangle& o) {
+namespace exactvis::region {
+
+RationalPoint3 nearest_doubles(const RationalPoint3& p) {
+  RationalPoint3 out = p;
+  for (int k = 0; k < 3; ++k) {
+    const double x = CGAL::to_double(p[k]);
+    if (std::isfinite(x)) out[k] = Exact(x);
+  }
+  return out;
+}
+
+bool coplanar_triangles(const Scene& scene, std::int64_t t, std::int64_t other) {
+  const SceneTriangle& a = scene.triangles[static_cast<std::size_t>(t)];
+  const SceneTriangle& b = scene.triangles[static_cast<std::size_t>(other)];
   for (int k = 0; k < 3; ++k)
-    if (orient3d(scene.corner(t, 0), scene.corner(t, 1), scene.corner(t, 2), scene.corner(o, k)) != Sign::Zero)
+    if (orient3d(scene.corner(a, 0), scene.corner(a, 1), scene.corner(a, 2), scene.corner(b, k)) != Sign::Zero)
       return false;
   return true;
 }
 
-Exact nearest_double(const Exact& x) { return Exact(CGAL::to_double(x)); }
-RationalPoint3 nearest_doubles(const RationalPoint3& p) {
-  return {nearest_double(p.x), nearest_double(p.y), nearest_double(p.z)};
+std::uint64_t mix_seed(std::uint64_t seed, std::uint64_t i) {
+  std::uint64_t z = seed + 0x9e3779b97f4a7c15ULL * (i + 1);
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+  return z ^ (z >> 31);
 }
-
-}  // namespace
 
 ExteriorWitnessCheck check_exterior_witness(const Scene& scene, const TriangleIndex& index, const Box3& scene_box,
                                             std::int64_t triangle_index, const ExteriorWitness& w) {
@@ -27,13 +39,12 @@ ExteriorWitnessCheck check_exterior_witness(const Scene& scene, const TriangleIn
   if (!in_triangle_relative_interior(w.q, tri)) return ExteriorWitnessCheck::NotInRelativeInterior;
   const Vec3<Exact> n = cross(tri[1] - tri[0], tri[2] - tri[0]);
   if (CGAL::sign(dot(n, w.d)) == 0) return ExteriorWitnessCheck::ParallelToTriangle;
-  const SceneTriangle& t = scene.triangles[static_cast<std::size_t>(triangle_index)];
   for (const std::int64_t o : index.candidates_in_box(enclosing_box({w.q}))) {
     if (o == triangle_index) continue;
     const SceneTriangle& ot = scene.triangles[static_cast<std::size_t>(o)];
     if (point_in_closed_triangle(w.q, to_rational(scene.corner(ot, 0)), to_rational(scene.corner(ot, 1)),
                                  to_rational(scene.corner(ot, 2))) &&
-        !coplanar_with(scene, t, ot))
+        !coplanar_triangles(scene, triangle_index, o))
       return ExteriorWitnessCheck::OnOtherTriangle;
   }
   if (open_ray_blocker(scene, index, scene_box, w.q, w.d, triangle_index) >= 0) return ExteriorWitnessCheck::Blocked;

@@ -37,6 +37,17 @@ ExteriorWitnessCheck check_exterior_witness(const Scene& scene, const TriangleIn
 ExteriorWitness round_exterior_witness(const Scene& scene, const TriangleIndex& index, const Box3& scene_box,
                                        std::int64_t triangle_index, const ExteriorWitness& w);
 
+// The point (or vector) with each coordinate rounded to the nearest double; a coordinate beyond the range of
+// doubles stays exact. Exact as rationals.
+RationalPoint3 nearest_doubles(const RationalPoint3& p);
+
+// True iff every corner of scene triangle `other` lies in the plane of scene triangle `t` (exact orient3d).
+bool coplanar_triangles(const Scene& scene, std::int64_t t, std::int64_t other);
+
+// A well-mixed 64-bit value of (seed, i) (splitmix64 finaliser): per-triangle random streams that do not depend on
+// the thread that runs the triangle.
+std::uint64_t mix_seed(std::uint64_t seed, std::uint64_t i);
+
 // The escaping ray of a from-region witness segment (p on a face of a box strictly enclosing the scene, q in
 // relint T, open segment (q, p) free): d = p - q. (Beyond p the ray is outside the box, where nothing is.)
 ExteriorWitness witness_from_segment(const RationalPoint3& p_on_box, const RationalPoint3& q);

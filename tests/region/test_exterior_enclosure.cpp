@@ -69,4 +69,49 @@ TEST(ExteriorEnclosure, ProofsAreRecheckedByTheOracle) {
   }
 }
 
+TEST(ExteriorEnclosure, OwnShellSidesRecheckedByTheOracle) {
+  // A closed box: every face has its inside blocked, its outside open; a face doubled by a second box sharing
+  // it has both sides blocked; a shell with a fin standing on a face gives no answer for that face.
+  ModelBuilder b;
+  b.box({0, 0, 0}, {1, 1, 1});
+  b.box({1, 0, 0}, {2, 1, 1});
+  const Scene& s = b.scene;
+  const TriangleIndex index(s);
+  const SceneShells shells(s);
+  const auto os = region_test::oracle_scene(s);
+  for (std::int64_t t = 0; t < static_cast<std::int64_t>(s.triangles.size()); ++t) {
+    const auto sides = own_shell_sides(s, index, bounding_box(s), shells, t);
+    ASSERT_TRUE(sides.has_value()) << "triangle " << t;
+    bool shared = true;
+    for (int k = 0; k < 3; ++k) shared &= s.corner(s.triangles[t], k).x == 1;
+    EXPECT_TRUE(sides->blocked[0] && sides->blocked[1] ? shared : !shared) << "triangle " << t;
+    EXPECT_NE(sides->blocked[0], sides->blocked[1] && !shared);
+    // Oracle: each side's ray crosses that many triangles of the shell (T and its coplanar ones left out),
+    // all transversally.
+    const auto& tt = os[static_cast<std::size_t>(t)];
+    for (int side = 0; side < 2; ++side) {
+      const oracle::QVec q = region_test::qv(sides->q), d = region_test::qv(sides->d[side]);
+      EXPECT_EQ(oracle::sign(oracle::dot(d, oracle::cross(tt[1] - tt[0], tt[2] - tt[0]))), side == 0 ? 1 : -1);
+      const oracle::QVec far = q + mpq_class(1000) * d;
+      int crossings = 0;
+      for (std::size_t i = 0; i < os.size(); ++i) {
+        const auto& o = os[i];
+        bool coplanar = true;
+        for (const auto& v : o) coplanar &= oracle::orient3d(tt[0], tt[1], tt[2], v) == 0;
+        if (coplanar) continue;
+        if (oracle::oracle_segment_crosses_triangle_interior(q, far, o[0], o[1], o[2])) ++crossings;
+        else EXPECT_FALSE(oracle::oracle_open_segment_meets_closed_triangle(q, far, o[0], o[1], o[2]));
+      }
+      EXPECT_EQ(crossings, sides->crossings[side]);
+      EXPECT_EQ(crossings % 2 == 1, sides->blocked[side]);
+    }
+  }
+  // A shell that is not closed gives no answer.
+  ModelBuilder open;
+  open.box({0, 0, 0}, {1, 1, 1}, false);
+  const TriangleIndex oi(open.scene);
+  const SceneShells osh(open.scene);
+  EXPECT_FALSE(own_shell_sides(open.scene, oi, bounding_box(open.scene), osh, 0).has_value());
+}
+
 }  // namespace

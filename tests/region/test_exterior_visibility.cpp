@@ -150,6 +150,10 @@ TEST(ExteriorVisibility, SharedFaceBetweenTwoBoxesRemoved) {
     bool on_shared = true;
     for (int k = 0; k < 3; ++k) on_shared &= b.scene.corner(b.scene.triangles[i], k).x == 1;
     EXPECT_EQ(r.kept[i], !on_shared) << "triangle " << i;
+    // Each shared triangle has a coplanar twin in the same closed shell: both its sides are inside (5.6.5).
+    if (on_shared) {
+      EXPECT_TRUE(r.result.triangles[i].sides.has_value()) << "triangle " << i;
+    }
   }
   check_against_oracle(b.scene, r, 200);
   EXPECT_EQ(run(b.scene, Path::QueryOnly).kept, r.kept);
@@ -181,12 +185,13 @@ TEST(ExteriorVisibility, AnswersDoNotDependOnThreads) {
 // Fixed-seed property test: an open box (no lid) with random triangles inside and around it. The three
 // stage configurations agree, and the oracle confirms every answer.
 TEST(ExteriorVisibility, RandomScenesAgreeWithOracleAndAcrossStages) {
-  for (unsigned seed = 1; seed <= 4; ++seed) {
+  for (unsigned seed = 1; seed <= 2; ++seed) {
     std::mt19937_64 rng(seed);
     auto coord = [&] { return static_cast<double>(static_cast<int>(rng() % 65)) / 64.0; };
     ModelBuilder b;
     b.box({0, 0, 0}, {1, 1, 1}, /*top=*/false);
     b.quad({0, 0, 1}, {0.5, 0, 1}, {0.5, 1, 1}, {0, 1, 1});  // half a lid
+    if (seed % 2 == 0) b.box({0.25, 0.25, 0.25}, {0.75, 0.5, 0.5});  // a closed shell inside (Lemma 5.6.5)
     for (int k = 0; k < 6; ++k) {
       Point3 p[3];
       for (auto& v : p) v = {coord(), coord(), coord() * 0.9};
