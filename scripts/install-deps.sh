@@ -10,6 +10,7 @@ packages=(
   nlohmann-json3-dev libcli11-dev libgtest-dev
   libzip-dev          # reading Quake 3 .pk3 archives (io/zip_archive)
   assimp-testmodels   # broken model files the bad-input tests use
+  openmpi-bin libopenmpi-dev  # mpirun exactvis pvs (apps/pvs_run), tested with mpirun --oversubscribe
 )
 
 missing=()
