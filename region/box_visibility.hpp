@@ -1,6 +1,6 @@
 #pragma once
 // Exact visibility of an axis-aligned box from a view cell with respect to a given set of occluders: the
-// hidden-box test of the PVS hierarchy (docs/theory.md §5.7). A box proved hidden with respect to occluders
+// hidden-box test of the PVS hierarchy (docs/theory.md §5.8). A box proved hidden with respect to occluders
 // that exclude every triangle inside it hides each of those triangles.
 #include "kernel/scene.hpp"
 #include "region/convex_polygon_3.hpp"

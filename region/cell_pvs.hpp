@@ -3,7 +3,7 @@
 // region/exact_pvs.hpp; the dispatch over methods region/pvs_method.hpp), and the scene context they are
 // computed in (the scene, its exact triangle index and its float ray caster, built once for all cells).
 //
-// Conventions (docs/theory.md §5.1, §5.6): a triangle is visible from the closed cell when the lines from the
+// Conventions (docs/theory.md §5.1, §5.7): a triangle is visible from the closed cell when the lines from the
 // cell to its relative interior that miss every other closed triangle have positive measure; an object is
 // visible when one of its triangles is. Cells inside geometry are allowed.
 #include "kernel/float_ray_caster.hpp"
@@ -46,7 +46,7 @@ struct PvsOptions {
   VisibilityOptions query;  // the exact per-triangle query (its sampling, seed and witness rounding)
   int rays = 8;             // Embree rays cast per triangle before the exact query (proposals only)
   int threads = 0;          // worker threads: 0 = all cores, else 1 .. kMaxThreads
-  bool hierarchy = true;    // cull subtrees of the triangle BVH whose box is proved hidden (§5.7)
+  bool hierarchy = true;    // cull subtrees of the triangle BVH whose box is proved hidden (§5.8)
   int box_rays = 32;        // Embree rays per BVH node to its triangles: one reaching the subtree skips the
                             // node's (exact) hidden-box test
   int min_cull = 16;        // hidden-box tests only for nodes of at least this many triangles
