@@ -6,6 +6,9 @@
 #include <string>
 
 #ifdef EXACTVIS_WITH_MPI
+// The C API only (OpenMPI/MPICH would otherwise pull in their deprecated C++ bindings).
+#define OMPI_SKIP_MPICXX 1
+#define MPICH_SKIP_MPICXX 1
 #include <mpi.h>
 #endif
 
