@@ -26,7 +26,7 @@ using app::trim;
 struct PvsCliOptions {
   std::vector<std::string> scenes;
   std::string grid, box, cells;
-  bool json = false, jsonl = false, resume = false, no_witnesses = false, quiet = false;
+  bool json = false, jsonl = false, resume = false, no_witnesses = false, quiet = false, no_hierarchy = false;
   std::string output, vtp, method = "exact", shard, seed = "1";
   int samples = 48, rays = 8, threads = 0;
 };
@@ -92,6 +92,7 @@ int run_pvs(const PvsCliOptions& o) {
   po.query.samples = o.samples;
   po.query.seed = app::parse_uint64(o.seed, "--seed");
   po.rays = o.rays;
+  po.hierarchy = !o.no_hierarchy;
   po.threads = app::check_thread_count(o.threads, "--threads");
   const bool sharded = !o.shard.empty();
   const app::Shard shard = sharded ? parse_shard(o.shard) : app::Shard{};
@@ -250,6 +251,8 @@ const exactvis::app::CommandRegistration registration("pvs", 110, [](CLI::App& p
       ->capture_default_str();
   sub->add_option("--rays", o->rays, "Embree rays per triangle proposing witnesses (each re-checked exactly)")
       ->capture_default_str();
+  sub->add_flag("--no-hierarchy", o->no_hierarchy,
+                "Decide every triangle on its own (no hidden-box culling; same answers, for comparison)");
   sub->add_option("--seed", o->seed, "Seed of the sampling (answers do not depend on it)")->capture_default_str();
   sub->add_flag("-q,--quiet", o->quiet, "No progress bar on stderr");
   return [o]() { return run_pvs(*o); };

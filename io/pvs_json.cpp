@@ -45,6 +45,8 @@ OrderedJson pvs_cell_json(const Scene& scene, std::int64_t cell_index, const reg
                 {"accepted_by_rays", s.accepted_by_rays},
                 {"exact_queries", s.exact_queries},
                 {"culled", s.culled},
+                {"boxes_tested", s.boxes_tested},
+                {"boxes_culled", s.boxes_culled},
                 {"stabbing_pairs", s.query.stabbing_pairs},
                 {"occluders_considered", s.query.occluders_considered},
                 {"splits", s.query.splits},

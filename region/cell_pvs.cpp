@@ -5,7 +5,8 @@
 
 namespace exactvis::region {
 
-PvsContext::PvsContext(const Scene& scene) : scene_(scene), index_(scene), rays_(scene) {
+PvsContext::PvsContext(const Scene& scene)
+    : scene_(scene), index_(scene), rays_(scene), bvh_(build_triangle_bvh(scene)) {
   if (scene.triangles.empty()) return;
   const Box3 b = bounding_box(scene);
   const double dx = b.hi.x - b.lo.x, dy = b.hi.y - b.lo.y, dz = b.hi.z - b.lo.z;

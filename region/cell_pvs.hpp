@@ -10,6 +10,7 @@
 #include "kernel/scene.hpp"
 #include "kernel/triangle_index.hpp"
 #include "region/convex_polygon_3.hpp"
+#include "region/triangle_bvh.hpp"
 #include "region/visibility_options.hpp"
 #include "region/witness.hpp"
 
@@ -21,7 +22,8 @@
 
 namespace exactvis::region {
 
-// What every cell of a run is computed against. Builds the AABB tree and the Embree BVH once (O(n log n));
+// What every cell of a run is computed against. Builds the AABB tree, the Embree BVH and the PVS hierarchy
+// (region/triangle_bvh.hpp) once (O(n log n));
 // `scene` must outlive the context. Queries are const and thread-safe.
 class PvsContext {
  public:
@@ -29,12 +31,14 @@ class PvsContext {
   const Scene& scene() const { return scene_; }
   const TriangleIndex& index() const { return index_; }
   const FloatRayCaster& rays() const { return rays_; }
+  const TriangleBvh& bvh() const { return bvh_; }
   double diagonal() const { return diagonal_; }  // length of the scene's bounding box diagonal
 
  private:
   const Scene& scene_;
   TriangleIndex index_;
   FloatRayCaster rays_;
+  TriangleBvh bvh_;
   double diagonal_ = 0;
 };
 
@@ -42,6 +46,10 @@ struct PvsOptions {
   VisibilityOptions query;  // the exact per-triangle query (its sampling, seed and witness rounding)
   int rays = 8;             // Embree rays cast per triangle before the exact query (proposals only)
   int threads = 0;          // worker threads: 0 = all cores, else 1 .. kMaxThreads
+  bool hierarchy = true;    // cull subtrees of the triangle BVH whose box is proved hidden (§5.8)
+  int box_rays = 32;        // Embree rays per BVH node to its triangles: one reaching the subtree skips the
+                            // node's (exact) hidden-box test
+  int min_cull = 16;        // hidden-box tests only for nodes of at least this many triangles
   // Called with the number of triangles decided so far in the current cell (thread-safe callers only:
   // it is called from the worker threads), e.g. for a progress bar. May be empty.
   std::function<void(std::int64_t decided)> on_progress;
@@ -60,6 +68,8 @@ struct CellPvsStats {
   std::int64_t accepted_by_rays = 0;   // visible through an exactly re-checked Embree proposal
   std::int64_t exact_queries = 0;      // triangles decided by the exact from-region query
   std::int64_t culled = 0;             // triangles proved hidden by a hidden hierarchy box (no own query)
+  std::int64_t boxes_tested = 0;       // exact hidden-box tests run
+  std::int64_t boxes_culled = 0;       // boxes proved hidden
   VisibilityStats query;               // accumulated over the exact queries (exact_evaluations left at 0)
   double seconds = 0;                  // wall-clock time (for benchmarks; not written to JSON files)
 };

@@ -1,14 +1,19 @@
 #include "region/exact_pvs.hpp"
 
+#include "region/box_visibility.hpp"
 #include "region/cell_visibility.hpp"
 #include "region/from_region_visibility.hpp"
 #include "region/ray_witness.hpp"
 #include "util/for_each_index.hpp"
 
+#include <tbb/parallel_invoke.h>
 #include <tbb/task_arena.h>
 
 #include <atomic>
+#include <functional>
+#include <glm/vec3.hpp>
 #include <chrono>
+#include <mutex>
 #include <stdexcept>
 #include <string>
 
@@ -66,15 +71,88 @@ CellPvs exact_cell_pvs(const PvsContext& context, const RationalBox3& cell, cons
     const std::int64_t d = decided.fetch_add(1) + 1;
     if (options.on_progress) options.on_progress(d);
   };
+  // The hierarchy (docs/theory.md §5.7): a node whose box is proved hidden with respect to the triangles
+  // outside its subtree hides all its triangles; the others are decided one by one as above.
+  const TriangleBvh& bvh = context.bvh();
+  std::vector<char> culled(n, 0);
+  std::mutex box_stats_mutex;
+  VisibilityStats box_stats;
+  std::int64_t boxes_tested = 0, boxes_culled = 0;
+  auto box_reached_by_rays = [&](const BvhNode& node, std::mt19937_64& rng) {
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    for (int r = 0; r < options.box_rays; ++r) {
+      // From a random point of the cell to a random point of a random triangle of the subtree.
+      Point3 p;
+      for (int k = 0; k < 3; ++k) p[k] = approx.lo[k] + unit(rng) * (approx.hi[k] - approx.lo[k]);
+      const auto& t = scene.triangles[bvh.order[node.begin + static_cast<int>(rng() % (node.end - node.begin))]];
+      double a = unit(rng), b = unit(rng);
+      if (a + b > 1) a = 1 - a, b = 1 - b;
+      Point3 x;
+      for (int k = 0; k < 3; ++k)
+        x[k] = scene.corner(t, 0)[k] + a * (scene.corner(t, 1)[k] - scene.corner(t, 0)[k]) +
+               b * (scene.corner(t, 2)[k] - scene.corner(t, 0)[k]);
+      const glm::vec3 origin(static_cast<float>(p.x), static_cast<float>(p.y), static_cast<float>(p.z));
+      const glm::vec3 dir(static_cast<float>(x.x - p.x), static_cast<float>(x.y - p.y), static_cast<float>(x.z - p.z));
+      const FloatRayCaster::Hit hit = context.rays().first_hit(origin, dir, 0.0f, 1.001f);
+      // The first hit inside the subtree, or none: the ray probably reaches a triangle of the subtree, so the
+      // exact test would fail: descend without it (descending is always sound).
+      if (hit.triangle_index < 0) return true;
+      const int pos = bvh.position[hit.triangle_index];
+      if (pos >= node.begin && pos < node.end) return true;
+    }
+    return false;
+  };
+  auto box_hidden = [&](int index) {
+    const BvhNode& node = bvh.nodes[index];
+    if (node.end - node.begin < std::max(1, options.min_cull) || boxes_meet(cell, node.box)) return false;
+    std::mt19937_64 rng(mix_seed(options.query.seed, n + static_cast<std::uint64_t>(index)));
+    if (box_reached_by_rays(node, rng)) return false;
+    // Occluders: every triangle outside the subtree (any of the subtree's triangles could be the target).
+    std::vector<RationalPoint3> corners{cell.lo, cell.hi, to_rational(node.box.lo), to_rational(node.box.hi)};
+    std::vector<std::int64_t> occluders;
+    for (const std::int64_t t : finder(enclosing_box(corners))) {
+      const int pos = bvh.position[t];
+      if (pos < node.begin || pos >= node.end) occluders.push_back(t);
+    }
+    VisibilityStats stats;
+    const bool hidden = !box_may_be_visible(scene, occluders, cell, node.box, options.query, stats);
+    stats.exact_evaluations = 0;
+    std::lock_guard lock(box_stats_mutex);
+    accumulate(box_stats, stats);
+    ++boxes_tested;
+    boxes_culled += hidden ? 1 : 0;
+    return hidden;
+  };
+  std::function<void(int)> visit = [&](int index) {
+    const BvhNode& node = bvh.nodes[index];
+    if (box_hidden(index)) {
+      for (int i = node.begin; i < node.end; ++i) culled[bvh.order[i]] = 1;
+      const std::int64_t d = decided.fetch_add(node.end - node.begin) + (node.end - node.begin);
+      if (options.on_progress) options.on_progress(d);
+      return;
+    }
+    if (node.left < 0) {
+      for (int i = node.begin; i < node.end; ++i) decide(static_cast<std::size_t>(bvh.order[i]));
+      return;
+    }
+    if (options.threads == 1) {
+      visit(node.left);
+      visit(node.right);
+    } else {
+      tbb::parallel_invoke([&] { visit(node.left); }, [&] { visit(node.right); });
+    }
+  };
   tbb::task_arena arena(options.threads > 0 ? options.threads : tbb::task_arena::automatic);
-  arena.execute([&] { for_each_index(n, options.threads != 1, 4, decide); });
+  if (options.hierarchy && !bvh.nodes.empty()) arena.execute([&] { visit(0); });
+  else arena.execute([&] { for_each_index(n, options.threads != 1, 4, decide); });
 
   CellPvs out;
   out.cell = cell;
   out.stats.triangles = static_cast<std::int64_t>(n);
   for (std::size_t i = 0; i < n; ++i) {
     const TriangleAnswer& a = answers[i];
-    if (a.by_rays) ++out.stats.accepted_by_rays;
+    if (culled[i]) ++out.stats.culled;
+    else if (a.by_rays) ++out.stats.accepted_by_rays;
     else {
       ++out.stats.exact_queries;
       accumulate(out.stats.query, a.stats);
@@ -82,6 +160,9 @@ CellPvs exact_cell_pvs(const PvsContext& context, const RationalBox3& cell, cons
     if (a.visible) out.visible.push_back({static_cast<std::int64_t>(i), a.witness});
   }
   out.stats.visible = static_cast<std::int64_t>(out.visible.size());
+  out.stats.boxes_tested = boxes_tested;
+  out.stats.boxes_culled = boxes_culled;
+  accumulate(out.stats.query, box_stats);
   out.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;
 }

@@ -34,7 +34,7 @@ TEST(PvsJson, CellShapeAndDocument) {
   EXPECT_EQ(c.dump(),
             R"({"cell":4,"box":["1/3",0.0,0.0,1.0,1.0,1.0],"visible":[7],"objects":["b"],)"
             R"("witnesses":{"7":[[1.0,0.5,0.0],[0.25,0.0,"1/3"]]},"stats":{"triangles":2,"visible":1,)"
-            R"("accepted_by_rays":1,"exact_queries":0,"culled":0,"stabbing_pairs":0,"occluders_considered":0,)"
+            R"("accepted_by_rays":1,"exact_queries":0,"culled":0,"boxes_tested":0,"boxes_culled":0,"stabbing_pairs":0,"occluders_considered":0,)"
             R"("splits":0,"cones_created":0,"real_line_tests":0}})");
   EXPECT_FALSE(pvs_cell_json(scene, 4, pvs, false).contains("witnesses"));
   OrderedJson c0 = pvs_cell_json(scene, 0, pvs, false);

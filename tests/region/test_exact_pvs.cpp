@@ -22,13 +22,20 @@ namespace {
 using region_test::qv;
 
 struct Checked {
-  std::int64_t visible = 0, hidden = 0, by_rays = 0;
+  std::int64_t visible = 0, hidden = 0, by_rays = 0, culled = 0;
 };
 
 // The PVS of `cell` checked against the brute-force per-triangle query and the oracle.
-Checked check_pvs(const Scene& scene, const RationalBox3& cell, int refute_samples = 60) {
+// Every hierarchy node tested exactly (no ray shortcut, any size): the hidden-box path at its most used.
+PvsOptions aggressive_hierarchy() {
+  PvsOptions o;
+  o.box_rays = 0;
+  o.min_cull = 1;
+  return o;
+}
+
+Checked check_pvs(const Scene& scene, const RationalBox3& cell, int refute_samples = 60, PvsOptions options = {}) {
   const PvsContext context(scene);
-  PvsOptions options;
   const CellPvs pvs = exact_cell_pvs(context, cell, options);
   std::vector<char> visible(scene.triangles.size(), 0);
   for (std::size_t k = 0; k < pvs.visible.size(); ++k) {
@@ -60,7 +67,7 @@ Checked check_pvs(const Scene& scene, const RationalBox3& cell, int refute_sampl
   EXPECT_EQ(pvs.stats.visible, static_cast<std::int64_t>(pvs.visible.size()));
   EXPECT_EQ(pvs.stats.triangles, static_cast<std::int64_t>(scene.triangles.size()));
   EXPECT_EQ(pvs.stats.accepted_by_rays + pvs.stats.exact_queries + pvs.stats.culled, pvs.stats.triangles);
-  return {pvs.stats.visible, pvs.stats.triangles - pvs.stats.visible, pvs.stats.accepted_by_rays};
+  return {pvs.stats.visible, pvs.stats.triangles - pvs.stats.visible, pvs.stats.accepted_by_rays, pvs.stats.culled};
 }
 
 RationalBox3 box(double x0, double y0, double z0, double x1, double y1, double z1) {
@@ -76,8 +83,9 @@ TEST(ExactPvs, TownCellsAgreeWithBruteForceAndOracle) {
   EXPECT_GT(street.hidden, 5);
   EXPECT_GT(street.by_rays, 0);  // the Embree proposals are exercised
   const RationalBox3 rational{{Exact(1, 3), Exact(1, 3), Exact(1)}, {Exact(5, 3), Exact(7, 3), Exact(3)}};
-  const Checked r = check_pvs(scene, rational);
+  const Checked r = check_pvs(scene, rational, 60, aggressive_hierarchy());
   EXPECT_GT(r.hidden, 5);
+  EXPECT_GT(r.culled, 0);
 }
 
 TEST(ExactPvs, ForestAndRoomAgreeWithBruteForceAndOracle) {
@@ -179,6 +187,32 @@ TEST(ExactPvs, MethodDispatchAndBadArguments) {
   PvsOptions bad;
   bad.threads = -1;
   EXPECT_THROW(exact_cell_pvs(context, box(0, 0, 0, 1, 1, 1), bad), std::invalid_argument);
+}
+
+TEST(ExactPvs, HierarchyNeverCullsTheTrianglesSeenThroughATinyAperture) {
+  // Rooms whose only opening is a small hole at a random place, many triangles inside; every BVH node gets
+  // the exact hidden-box test. The PVS must equal the per-triangle answers (no culling), and culling happens.
+  std::int64_t culled = 0, seen_inside = 0;
+  for (unsigned seed = 10; seed < 16; ++seed) {
+    const double hole = 0.02 + 0.05 * (seed % 4);
+    const Scene scene = pvs_test::pinhole_room(hole, 40, seed);
+    const PvsContext context(scene);
+    const int s = static_cast<int>(seed);
+    const RationalBox3 cell = box(-4 - s % 3, 1 + s % 5, 2, -3 - s % 3, 3 + s % 5, 7);
+    PvsOptions flat;
+    flat.hierarchy = false;
+    const CellPvs reference = exact_cell_pvs(context, cell, flat);
+    const CellPvs tree = exact_cell_pvs(context, cell, aggressive_hierarchy());
+    ASSERT_EQ(tree.visible.size(), reference.visible.size()) << "seed " << seed;
+    for (std::size_t k = 0; k < tree.visible.size(); ++k) {
+      EXPECT_EQ(tree.visible[k].index, reference.visible[k].index) << "seed " << seed;
+      seen_inside += tree.visible[k].index >= 18 ? 1 : 0;  // inner triangles
+    }
+    EXPECT_EQ(tree.stats.culled + tree.stats.accepted_by_rays + tree.stats.exact_queries, tree.stats.triangles);
+    culled += tree.stats.culled;
+  }
+  EXPECT_GT(culled, 0);
+  EXPECT_GT(seen_inside, 0);
 }
 
 }  // namespace

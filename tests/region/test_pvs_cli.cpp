@@ -18,6 +18,7 @@
 #include <map>
 #include <set>
 #include <sstream>
+#include <unistd.h>
 
 namespace fs = std::filesystem;
 using nlohmann::json;
@@ -255,5 +256,56 @@ TEST_F(PvsCli, BadCellsFilesAndOptionsGiveOneLineErrors) {
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << args << ": " << r.err;
   }
 }
+
+TEST_F(PvsCli, ResumeAfterAKillEqualsAnUninterruptedRun) {
+  const std::string base = "pvs " + path("town.obj") + " --grid 6,1,1 --threads 1 --rays 0 -q -o ";
+  ASSERT_EQ(run(base + path("whole.jsonl")).status, 0);
+  const std::string whole = slurp(path("whole.jsonl"));
+  // Start the same run, SIGKILL it once it has written a cell, then resume.
+  const std::string log = path("killed.log");
+  const std::string cmd = std::string(EXACTVIS_BINARY) + " " + base + path("killed.jsonl") + " >" + log + " 2>&1 & echo $! >" +
+                          path("pid");
+  ASSERT_EQ(std::system(("sh -c '" + cmd + "'").c_str()), 0);
+  std::string pid;
+  for (int i = 0; i < 500 && pid.empty(); ++i) {
+    pid = slurp(path("pid"));
+    if (pid.empty()) ::usleep(10000);
+  }
+  ASSERT_FALSE(pid.empty());
+  bool killed = false;
+  for (int i = 0; i < 3000; ++i) {
+    const std::string part = slurp(path("killed.jsonl"));
+    if (std::count(part.begin(), part.end(), '\n') >= 2) {
+      killed = std::system(("kill -9 " + pid + " 2>/dev/null").c_str()) == 0;
+      break;
+    }
+    ::usleep(5000);
+  }
+  ::usleep(100000);
+  const std::string partial = slurp(path("killed.jsonl"));
+  if (killed) {
+    EXPECT_LT(partial.size(), whole.size()) << "the kill came after the run had finished";
+  }
+  const CliRun resumed = run(base + path("killed.jsonl") + " --resume");
+  ASSERT_EQ(resumed.status, 0) << resumed.err;
+  EXPECT_EQ(slurp(path("killed.jsonl")), whole);
+}
+
+#ifdef EXACTVIS_MPIEXEC
+TEST_F(PvsCli, MpiRunEqualsTheSerialRun) {
+  const std::string args = "pvs " + path("town.obj") + " --grid 3,2,1 --threads 1 -q ";
+  ASSERT_EQ(run(args + "--json -o " + path("serial.json")).status, 0);
+  const std::string mpirun = std::string(EXACTVIS_MPIEXEC) + " --oversubscribe --allow-run-as-root -np 3 ";
+  const std::string cmd = mpirun + EXACTVIS_BINARY + " " + args + "--json -o " + path("mpi.json") + " >" +
+                          path("mpi.log") + " 2>&1";
+  ASSERT_EQ(std::system(cmd.c_str()), 0) << slurp(path("mpi.log"));
+  EXPECT_EQ(slurp(path("mpi.json")), slurp(path("serial.json")));
+  // JSON lines under MPI: the same cells (in finishing order).
+  const std::string lines = mpirun + EXACTVIS_BINARY + " " + args + "-o " + path("mpi.jsonl") + " >" + path("mpi.log") + " 2>&1";
+  ASSERT_EQ(std::system(lines.c_str()), 0) << slurp(path("mpi.log"));
+  ASSERT_EQ(run("pvs-merge " + path("mpi.jsonl") + " -o " + path("mpi_merged.json")).status, 0);
+  EXPECT_EQ(slurp(path("mpi_merged.json")), slurp(path("serial.json")));
+}
+#endif
 
 }  // namespace

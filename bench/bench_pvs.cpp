@@ -1,0 +1,86 @@
+// bench_pvs: per-cell time of `exactvis pvs` (method exact) on generated towns and forests, with and without
+// the hierarchy, side by side in the same run with the per-triangle loop of `exactvis visible --triangles all`
+// (region::visibility_from_source), and the PVS size. Wall-clock and process CPU seconds (the machine may be
+// shared: CPU seconds are the fairer figure).
+//
+// Usage: bench_pvs [--kinds town,forest] [--sizes 1000,10000] [--threads 1,2] [--baseline-max N]
+//   --baseline-max: run the per-triangle loop only for scenes of at most N triangles (default 10000).
+#include "bench/bench_util.hpp"
+#include "kernel/scene_generators.hpp"
+#include "region/cell_visibility.hpp"
+#include "region/exact_pvs.hpp"
+
+#include <cstdio>
+#include <ctime>
+#include <string>
+
+using namespace exactvis;
+
+namespace {
+
+struct Timing {
+  double wall = 0, cpu = 0;
+};
+
+template <class F>
+Timing timed(F&& f) {
+  const double w0 = bench::now();
+  const std::clock_t c0 = std::clock();
+  f();
+  return {bench::now() - w0, static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC};
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::vector<std::string> kinds{"town", "forest"}, sizes{"1000", "10000"}, threads{"1", "2"};
+  long baseline_max = 10000;
+  for (int i = 1; i + 1 < argc; i += 2) {
+    const std::string a = argv[i];
+    if (a == "--kinds") kinds = bench::split(argv[i + 1]);
+    else if (a == "--sizes") sizes = bench::split(argv[i + 1]);
+    else if (a == "--threads") threads = bench::split(argv[i + 1]);
+    else if (a == "--baseline-max") baseline_max = std::stol(argv[i + 1]);
+  }
+  std::printf("%-7s %8s %3s %-14s %8s %8s %8s %10s %8s %8s\n", "scene", "tris", "thr", "method", "wall_s", "cpu_s",
+              "pvs", "tris/cpu_s", "culled", "ratio");
+  for (const auto& kind : kinds)
+    for (const auto& size : sizes) {
+      const Scene scene = generate_scene(kind, std::stol(size), 1);
+      const Box3 b = bounding_box(scene);
+      // A street-level cell near one corner (as in the region tests).
+      const region::RationalBox3 cell =
+          region::exact_box({{b.lo.x + 0.25, b.lo.y + 0.25, 1}, {b.lo.x + 1.5, b.lo.y + 1.5, 2}});
+      const region::PvsContext context(scene);
+      const auto n = static_cast<double>(scene.triangles.size());
+      for (const auto& th : threads) {
+        const int t = std::stoi(th);
+        double baseline_cpu = 0;
+        if (static_cast<long>(scene.triangles.size()) <= baseline_max) {
+          std::vector<std::int64_t> all(scene.triangles.size());
+          for (std::size_t i = 0; i < all.size(); ++i) all[i] = static_cast<std::int64_t>(i);
+          region::CellVisibilityOptions co;
+          co.threads = t;
+          region::CellVisibility cv;
+          const Timing tm = timed([&] { cv = region::visibility_from_source(scene, context.index(), {cell, {}}, all, co); });
+          baseline_cpu = tm.cpu;
+          std::printf("%-7s %8.0f %3d %-14s %8.2f %8.2f %8lld %10.1f %8s %8s\n", kind.c_str(), n, t, "per-triangle",
+                      tm.wall, tm.cpu, static_cast<long long>(cv.visible), n / tm.cpu, "-", "1.00");
+        }
+        for (bool hierarchy : {false, true}) {
+          region::PvsOptions po;
+          po.threads = t;
+          po.hierarchy = hierarchy;
+          region::CellPvs pvs;
+          const Timing tm = timed([&] { pvs = region::exact_cell_pvs(context, cell, po); });
+          char ratio[32] = "-";
+          if (baseline_cpu > 0) std::snprintf(ratio, sizeof ratio, "%.2f", baseline_cpu / tm.cpu);
+          std::printf("%-7s %8.0f %3d %-14s %8.2f %8.2f %8lld %10.1f %8lld %8s\n", kind.c_str(), n, t,
+                      hierarchy ? "pvs" : "pvs-flat", tm.wall, tm.cpu, static_cast<long long>(pvs.stats.visible),
+                      n / tm.cpu, static_cast<long long>(pvs.stats.culled), ratio);
+          std::fflush(stdout);
+        }
+      }
+    }
+  return 0;
+}

@@ -1,0 +1,45 @@
+#include "region/box_visibility.hpp"
+
+#include "region/line_set_csg.hpp"
+#include "region/stabbing_pair.hpp"
+
+namespace exactvis::region {
+
+bool boxes_meet(const RationalBox3& cell, const Box3& box) {
+  for (int k = 0; k < 3; ++k)
+    if (Exact(box.hi[k]) < cell.lo[k] || cell.hi[k] < Exact(box.lo[k])) return false;
+  return true;
+}
+
+bool box_may_be_visible(const Scene& scene, const std::vector<std::int64_t>& occluders, const RationalBox3& cell,
+                        const Box3& box, const VisibilityOptions& options, VisibilityStats& stats) {
+  const RationalBox3 b = exact_box(box);
+  for (int axis = 0; axis < 3; ++axis)
+    for (bool high : {false, true}) {
+      // Segments reach B first through a face whose outer open half-space holds their start in the cell.
+      const bool faces_cell = high ? cell.hi[axis] > b.hi[axis] : cell.lo[axis] < b.lo[axis];
+      if (!faces_cell) continue;
+      // A flat box (all its triangles in one plane) has a degenerate face: its area is the face itself.
+      const Polygon3 face = box_face(b, axis, high);
+      if (is_degenerate(face)) continue;  // zero-area face: reached only by a measure-zero set of lines
+      for (const std::array<RationalPoint3, 3>& tri : {std::array<RationalPoint3, 3>{face[0], face[1], face[2]},
+                                                      std::array<RationalPoint3, 3>{face[0], face[2], face[3]}}) {
+        for (int ca = 0; ca < 3; ++ca)
+          for (bool chigh : {false, true}) {
+            const Exact& plane = chigh ? cell.hi[ca] : cell.lo[ca];
+            bool in_front = false;
+            for (const auto& c : tri) in_front |= chigh ? (c[ca] > plane) : (c[ca] < plane);
+            if (!in_front) continue;
+            for (const StabbingPair& pair : stabbing_pairs(box_face(cell, ca, chigh), tri)) {
+              ++stats.stabbing_pairs;
+              const PairVisibility pv = pair_visibility(scene, occluders, -1, pair, options);
+              accumulate(stats, pv.stats);
+              if (pv.witness) return true;
+            }
+          }
+      }
+    }
+  return false;
+}
+
+}  // namespace exactvis::region
