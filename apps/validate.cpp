@@ -5,6 +5,8 @@
 #include "apps/command_registry.hpp"
 #include "io/atomic_file.hpp"
 #include "io/load_scene.hpp"
+#include "io/quake3_bsp.hpp"
+#include "io/quake3_cluster_visibility.hpp"
 #include "io/reported_pvs.hpp"
 #include "io/view_cells.hpp"
 #include "io/write_pvs_check_vtp.hpp"
@@ -13,8 +15,13 @@
 #include "util/progress_bar.hpp"
 
 #include <nlohmann/json.hpp>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 
+#include <algorithm>
+#include <atomic>
 #include <filesystem>
+#include <random>
 #include <fstream>
 #include <iostream>
 
@@ -34,6 +41,12 @@ struct ValidateOptions {
   std::string seed = "1";
   int threads = 0;
   bool quiet = false;
+  // Quake 3 maps
+  std::string bsp;
+  std::int64_t pairs = -1;  // -1: not given
+  std::string clusters;
+  std::string occluders = "leaves";
+  std::string obj;
 };
 
 ordered_json rational_point_json(const RationalPoint3& p) {
@@ -164,25 +177,179 @@ int run_validate(const ValidateOptions& o) {
   return 0;
 }
 
+// The ordered cluster pairs to check: --clusters (all ordered pairs of the listed clusters), or --pairs N
+// sampled with the seed among the pairs of non-empty clusters, the pairs the map marks invisible first.
+std::vector<std::pair<int, int>> chosen_pairs(const ValidateOptions& o, const quake3::BspMap& map,
+                                              const quake3::ClusterVisibilityChecker& checker, std::uint64_t seed,
+                                              std::int64_t* eligible) {
+  const int n = checker.cluster_count();
+  std::vector<std::pair<int, int>> out;
+  if (!o.clusters.empty()) {
+    std::vector<int> list;
+    for (const auto& part : app::split(o.clusters, ',')) {
+      const std::string t = app::trim(part);
+      std::size_t used = 0;
+      long long c = -1;
+      try {
+        c = std::stoll(t, &used);
+      } catch (const std::exception&) {
+        used = 0;
+      }
+      if (t.empty() || used != t.size() || c < 0 || c >= n)
+        throw std::invalid_argument("--clusters: '" + t + "' is not a cluster of the map (0 .. " + std::to_string(n - 1) + ")");
+      if (std::find(list.begin(), list.end(), static_cast<int>(c)) == list.end()) list.push_back(static_cast<int>(c));
+    }
+    if (list.size() < 2) throw std::invalid_argument("--clusters: give at least two different clusters");
+    for (const int a : list)
+      for (const int b : list)
+        if (a != b) out.emplace_back(a, b);
+    *eligible = static_cast<std::int64_t>(n) * (n - 1);
+    return out;
+  }
+  const std::int64_t want = o.pairs < 0 ? 100 : o.pairs;
+  std::vector<std::pair<int, int>> hidden, shown;
+  for (int a = 0; a < n; ++a) {
+    if (checker.region_empty(a)) continue;
+    for (int b = 0; b < n; ++b)
+      if (b != a && !checker.region_empty(b)) (map.cluster_visible(a, b) ? shown : hidden).emplace_back(a, b);
+  }
+  *eligible = static_cast<std::int64_t>(hidden.size() + shown.size());
+  std::mt19937_64 rng(seed);
+  std::shuffle(hidden.begin(), hidden.end(), rng);
+  std::shuffle(shown.begin(), shown.end(), rng);
+  for (auto* list : {&hidden, &shown})
+    for (const auto& p : *list) {
+      if (static_cast<std::int64_t>(out.size()) >= want) return out;
+      out.push_back(p);
+    }
+  return out;
+}
+
+int run_validate_bsp(const ValidateOptions& o) {
+  if (!o.scenes.empty() || !o.cells.empty() || !o.pvs.empty() || !o.vtp.empty())
+    throw std::invalid_argument("--bsp: give no SCENE, --cells, --pvs or --vtp with a map");
+  if (o.pairs >= 0 && !o.clusters.empty()) throw std::invalid_argument("--pairs: give either --pairs or --clusters");
+  if (o.pairs == 0) throw std::invalid_argument("--pairs: must be at least 1");
+  if (o.samples < 0) throw std::invalid_argument("--samples must be >= 0");
+  quake3::Occluders occluders;
+  if (o.occluders == "leaves") occluders = quake3::Occluders::Leaves;
+  else if (o.occluders == "brushes") occluders = quake3::Occluders::Brushes;
+  else throw std::invalid_argument("--occluders: '" + o.occluders + "' is not leaves or brushes");
+  region::VisibilityOptions vo;
+  vo.samples = o.samples;
+  vo.seed = app::parse_uint64(o.seed, "--seed");
+  const int threads = app::check_thread_count(o.threads, "--threads");
+
+  const quake3::BspMap map = quake3::read_bsp(o.bsp);
+  OutputFiles outputs({o.output, o.obj});
+  const quake3::ClusterVisibilityChecker checker(map, occluders);
+  std::int64_t eligible = 0;
+  const std::vector<std::pair<int, int>> pairs = chosen_pairs(o, map, checker, vo.seed, &eligible);
+
+  std::vector<quake3::ClusterVisibility> results(pairs.size());
+  {
+    ProgressBar bar("validate --bsp", pairs.size(), app::progress_wanted(o.quiet));
+    tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
+    arena.execute([&] {
+      tbb::parallel_for(std::size_t(0), pairs.size(), [&](std::size_t i) {
+        results[i] = checker.check(pairs[i].first, pairs[i].second, vo);
+        bar.advance();
+      });
+    });
+  }
+
+  ordered_json j;
+  j["map"] = map.source;
+  j["clusters"] = checker.cluster_count();
+  j["occluders"] = quake3::occluders_name(occluders);
+  j["pairs"] = ordered_json::array();
+  std::int64_t false_invisible = 0, false_visible = 0;
+  for (std::size_t i = 0; i < pairs.size(); ++i) {
+    const bool vis = map.cluster_visible(pairs[i].first, pairs[i].second);
+    const quake3::ClusterVisibility& r = results[i];
+    ordered_json e;
+    e["from"] = pairs[i].first;
+    e["to"] = pairs[i].second;
+    e["visdata"] = vis;
+    e["exact"] = r.visible;
+    e["witness"] = r.witness ? ordered_json::array({rational_point_json(r.witness->p), rational_point_json(r.witness->q)})
+                             : ordered_json(nullptr);
+    j["pairs"].push_back(e);
+    false_invisible += (r.visible && !vis) ? 1 : 0;
+    false_visible += (!r.visible && vis) ? 1 : 0;
+  }
+  j["totals"] = {{"pairs", pairs.size()}, {"false_invisible", false_invisible}, {"false_visible", false_visible}};
+
+  if (!o.output.empty())
+    outputs.write(o.output, [&](const std::string& temp) {
+      std::ofstream out(temp);
+      out << j.dump(2) << "\n";
+      return static_cast<bool>(out);
+    });
+  if (!o.obj.empty())
+    outputs.write(o.obj, [&](const std::string& temp) {
+      quake3::write_opaque_obj(temp, map, occluders);
+      return true;
+    });
+  outputs.commit();
+
+  if (o.json) {
+    std::cout << j.dump(2) << "\n";
+  } else {
+    for (std::size_t i = 0; i < pairs.size(); ++i) {
+      const bool vis = map.cluster_visible(pairs[i].first, pairs[i].second);
+      if (vis == results[i].visible) continue;
+      std::cout << "cluster " << pairs[i].first << " -> " << pairs[i].second << ": "
+                << (results[i].visible ? "false invisible (visdata hides it, exactly visible)"
+                                       : "false visible (visdata shows it, exactly hidden)")
+                << "\n";
+    }
+    std::cout << map.source << ": " << checker.cluster_count() << " clusters, occluders "
+              << quake3::occluders_name(occluders) << "; checked " << pairs.size() << " of " << eligible
+              << " ordered pairs (" << (eligible > 0 ? 100.0 * static_cast<double>(pairs.size()) / static_cast<double>(eligible) : 0.0)
+              << "%): false invisible " << false_invisible << ", false visible " << false_visible << "\n";
+  }
+  return 0;
+}
+
+int run_validate_any(const ValidateOptions& o) {
+  if (!o.bsp.empty()) return run_validate_bsp(o);
+  if (o.pairs >= 0 || !o.clusters.empty() || !o.obj.empty() || o.occluders != "leaves")
+    throw std::invalid_argument("--pairs, --clusters, --occluders and --obj need --bsp MAP");
+  if (o.scenes.empty()) throw std::invalid_argument("give SCENE... --cells --pvs, or --bsp MAP");
+  return run_validate(o);
+}
+
 const exactvis::app::CommandRegistration registration("validate", 110, [](CLI::App& parent) {
   auto o = std::make_shared<ValidateOptions>();
   CLI::App* sub = parent.add_subcommand(
       "validate",
       "Check another tool's PVS exactly: per view cell the false visible triangles (listed, exactly hidden) and "
-      "the false invisible ones (missing, visible, with a witness segment each)");
-  sub->add_option("scene", o->scenes, "Scene files (.obj .ply .off .stl), loaded as one scene")->required();
+      "the false invisible ones (missing, visible, with a witness segment each); or with --bsp a Quake 3 map's "
+      "visdata, cluster pair by cluster pair");
+  sub->add_option("scene", o->scenes, "Scene files (.obj .ply .off .stl), loaded as one scene");
   sub->add_option("--cells", o->cells, "View cells file {\"cells\": [[x0,y0,z0,x1,y1,z1], ...]}");
   sub->add_option("--pvs", o->pvs,
                   "The PVS to check: exactvis pvs JSON (or its JSON lines), or text lines 'cell_index: id id ...'");
   sub->add_flag("--json", o->json, "Print the JSON report on stdout (instead of the summary)");
   sub->add_option("-o,--output", o->output, "Write the JSON report to this file");
   sub->add_option("--vtp", o->vtp, "Write DIR/cell_K.vtp per cell: the scene coloured by status, with the cell box");
+  sub->add_option("--bsp", o->bsp, "Quake 3 map (.bsp, ARCHIVE.pk3:MEMBER or a .pk3 with one map): check its visdata");
+  sub->add_option("--pairs", o->pairs,
+                  "With --bsp: check N ordered cluster pairs sampled with --seed, those the map marks invisible first "
+                  "(default 100)");
+  sub->add_option("--clusters", o->clusters, "With --bsp: check every ordered pair of these clusters A,B,...");
+  sub->add_option("--occluders", o->occluders,
+                  "With --bsp: leaves (the compiled solid space, default) or brushes (not implemented yet)")
+      ->capture_default_str();
+  sub->add_option("--obj", o->obj, "With --bsp: write the map's opaque geometry as OBJ");
   sub->add_option("--samples", o->samples, "Random segments cast per source/target pair before the exact query")
       ->capture_default_str();
-  sub->add_option("--seed", o->seed, "Seed of the sampling (answers do not depend on it)")->capture_default_str();
+  sub->add_option("--seed", o->seed, "Seed of the sampling and of --pairs (answers do not depend on it)")
+      ->capture_default_str();
   sub->add_option("--threads", o->threads, "Worker threads: 0 = all cores (default), else 1 .. 1024");
   sub->add_flag("-q,--quiet", o->quiet, "No progress bar on stderr");
-  return [o]() { return run_validate(*o); };
+  return [o]() { return run_validate_any(*o); };
 });
 
 }  // namespace

@@ -133,6 +133,42 @@ bool ClusterVisibilityChecker::is_witness(const region::Witness& w) const {
 }
 
 ClusterVisibility ClusterVisibilityChecker::check(int a, int b, const region::VisibilityOptions& options) const {
+  ClusterVisibility out = check_exact(a, b, options);
+  if (out.witness && options.round_witness) {
+    // A witness with double coordinates when one is near: the ends moved towards the centres of their
+    // leaves (the closed segment is at positive distance from every closed solid, so a small move keeps
+    // it free), rounded, and accepted only after the same exact checks.
+    auto rounded = [](const RationalPoint3& x) {
+      return RationalPoint3{Exact(CGAL::to_double(x.x)), Exact(CGAL::to_double(x.y)), Exact(CGAL::to_double(x.z))};
+    };
+    const RationalPoint3 ca = leaf_centre(a, out.witness->p), cb = leaf_centre(b, out.witness->q);
+    Exact t(1, 8);
+    for (int attempt = 0; attempt < 16; ++attempt, t /= 8) {
+      const region::Witness r{rounded(out.witness->p + t * (ca - out.witness->p)),
+                              rounded(out.witness->q + t * (cb - out.witness->q))};
+      if (in_region(a, r.p) && in_region(b, r.q) && is_witness(r)) {
+        out.witness = r;
+        break;
+      }
+    }
+  }
+  return out;
+}
+
+RationalPoint3 ClusterVisibilityChecker::leaf_centre(int cluster, const RationalPoint3& x) const {
+  for (const std::int32_t leaf : regions_[static_cast<std::size_t>(cluster)].leaves)
+    if (region::locate(volumes_[static_cast<std::size_t>(leaf)], x) != region::Containment::Outside)
+      return vertex_centroid(volumes_[static_cast<std::size_t>(leaf)]);
+  return x;
+}
+
+bool ClusterVisibilityChecker::in_region(int cluster, const RationalPoint3& x) const {
+  for (const std::int32_t leaf : regions_[static_cast<std::size_t>(cluster)].leaves)
+    if (region::locate(volumes_[static_cast<std::size_t>(leaf)], x) != region::Containment::Outside) return true;
+  return false;
+}
+
+ClusterVisibility ClusterVisibilityChecker::check_exact(int a, int b, const region::VisibilityOptions& options) const {
   if (a < 0 || b < 0 || a >= cluster_count() || b >= cluster_count())
     throw std::out_of_range("cluster pair (" + std::to_string(a) + ", " + std::to_string(b) + ") is out of range");
   if (a == b) throw std::invalid_argument("cluster pair (" + std::to_string(a) + ", " + std::to_string(a) + "): the same cluster");

@@ -40,7 +40,8 @@ std::vector<std::vector<Portal>> cluster_portals(const BspMap& map, const std::v
 struct ClusterVisibility {
   bool visible = false;
   // When visible: p in A's region, q in B's region, the open segment (p, q) missing every closed solid, and
-  // p, q in no solid (so the closed segment misses them too); exact.
+  // p, q in no solid (so the closed segment misses them too); exact, rounded to doubles when the rounded
+  // segment passes the same exact checks (options.round_witness).
   std::optional<region::Witness> witness;
   std::int64_t polygon_queries = 0;  // exact portal-to-portal queries made
 };
@@ -70,6 +71,10 @@ class ClusterVisibilityChecker {
   };
   std::vector<std::array<RationalPoint3, 3>> occluders_meeting(const Box3& box) const;
   bool is_witness(const region::Witness& w) const;
+  bool in_region(int cluster, const RationalPoint3& x) const;  // in the closed region (exact)
+  // The vertex centroid of the cluster's first leaf containing x (x itself if none does).
+  RationalPoint3 leaf_centre(int cluster, const RationalPoint3& x) const;
+  ClusterVisibility check_exact(int a, int b, const region::VisibilityOptions& options) const;
 
   std::vector<ConvexPolyhedron3> volumes_;
   std::vector<ClusterRegion> regions_;
