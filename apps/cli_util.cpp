@@ -56,17 +56,19 @@ Exact parse_exact(const std::string& text, const std::string& what) {
   }
 }
 
-region::RationalBox3 parse_cell(const std::string& text) {
+region::RationalBox3 parse_box(const std::string& text, const std::string& what) {
   const auto parts = split(text, ',');
-  if (parts.size() != 6) throw std::invalid_argument("--cell needs 6 numbers X0,Y0,Z0,X1,Y1,Z1");
+  if (parts.size() != 6) throw std::invalid_argument(what + " needs 6 numbers X0,Y0,Z0,X1,Y1,Z1");
   region::RationalBox3 b;
   for (int k = 0; k < 3; ++k) {
-    b.lo[k] = parse_exact(parts[k], "--cell");
-    b.hi[k] = parse_exact(parts[k + 3], "--cell");
-    if (!(b.lo[k] < b.hi[k])) throw std::invalid_argument("--cell: need X0 < X1, Y0 < Y1 and Z0 < Z1");
+    b.lo[k] = parse_exact(parts[k], what);
+    b.hi[k] = parse_exact(parts[k + 3], what);
+    if (!(b.lo[k] < b.hi[k])) throw std::invalid_argument(what + ": need X0 < X1, Y0 < Y1 and Z0 < Z1");
   }
   return b;
 }
+
+region::RationalBox3 parse_cell(const std::string& text) { return parse_box(text, "--cell"); }
 
 region::Polygon3 parse_source_polygon(const std::string& text) {
   region::Polygon3 poly;

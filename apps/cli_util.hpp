@@ -45,6 +45,8 @@ Exact parse_exact(const std::string& text, const std::string& what);
 // ---- options shared by subcommands
 // --cell "X0,Y0,Z0,X1,Y1,Z1": six numbers (decimals or num/den, exact), X0 < X1, Y0 < Y1, Z0 < Z1.
 region::RationalBox3 parse_cell(const std::string& text);
+// The same for any box option named `what` (e.g. "--box"): messages start with `what`.
+region::RationalBox3 parse_box(const std::string& text, const std::string& what);
 // --source-polygon "x,y,z;x,y,z;...": a convex planar polygon (region::validate_source_polygon), exact.
 region::Polygon3 parse_source_polygon(const std::string& text);
 // --light SPEC: the exact name of a scene object, or a polygon "x,y,z;x,y,z;x,y,z[;...]" (finite

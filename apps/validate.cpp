@@ -8,9 +8,8 @@
 #include "io/quake3_bsp.hpp"
 #include "io/quake3_cluster_visibility.hpp"
 #include "io/reported_pvs.hpp"
-#include "io/view_cells.hpp"
+#include "io/view_cells_json.hpp"
 #include "io/write_pvs_check_vtp.hpp"
-#include "kernel/triangle_index.hpp"
 #include "region/pvs_check.hpp"
 #include "util/progress_bar.hpp"
 
@@ -71,7 +70,7 @@ int run_validate(const ValidateOptions& o) {
   if (o.cells.empty()) throw std::invalid_argument("--cells: required (the view cells the PVS was computed for)");
   if (o.pvs.empty()) throw std::invalid_argument("--pvs: required (the PVS to check)");
   if (o.samples < 0) throw std::invalid_argument("--samples must be >= 0");
-  region::CellVisibilityOptions co;
+  region::PvsOptions co;
   co.query.samples = o.samples;
   co.query.seed = app::parse_uint64(o.seed, "--seed");
   co.threads = app::check_thread_count(o.threads, "--threads");
@@ -102,13 +101,15 @@ int run_validate(const ValidateOptions& o) {
   all_outputs.push_back(o.output);
   OutputFiles outputs(all_outputs);
 
-  const TriangleIndex index(scene);
+  const region::PvsContext context(scene);
   std::vector<region::PvsCheck> checks;
   {
-    ProgressBar bar("validate", cells.size() * scene.triangles.size(), app::progress_wanted(o.quiet));
-    co.on_target_done = [&bar] { bar.advance(); };
-    for (std::size_t k = 0; k < cells.size(); ++k)
-      checks.push_back(region::check_reported_pvs(scene, index, cells[k], reported[k], co));
+    const std::uint64_t n = scene.triangles.size();
+    ProgressBar bar("validate", cells.size() * n, app::progress_wanted(o.quiet));
+    for (std::size_t k = 0; k < cells.size(); ++k) {
+      co.on_progress = [&bar, k, n](std::int64_t decided) { bar.set_done(k * n + static_cast<std::uint64_t>(decided)); };
+      checks.push_back(region::check_reported_pvs(context, cells[k], reported[k], co));
+    }
   }
 
   ordered_json j;

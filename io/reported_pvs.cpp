@@ -2,6 +2,7 @@
 
 #include "io/json_number.hpp"
 #include "io/load_scene.hpp"
+#include "io/pvs_json.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -92,6 +93,16 @@ ReportedPvs parse_text(const std::string& path, const std::string& text) {
   return out;
 }
 
+// Whether the first line is the header of `exactvis pvs --jsonl` (an object with "cell_count").
+bool is_pvs_lines_header(const std::string& text) {
+  try {
+    const nlohmann::json first = nlohmann::json::parse(text.substr(0, text.find('\n')));
+    return first.is_object() && first.contains("cell_count") && !first.contains("visible");
+  } catch (const nlohmann::json::exception&) {
+    return false;
+  }
+}
+
 }  // namespace
 
 ReportedPvs read_reported_pvs(const std::string& path) {
@@ -121,6 +132,12 @@ ReportedPvs read_reported_pvs(const std::string& path) {
       if (!whole["cells"].is_array()) throw InputError(path + ": \"cells\" is not an array");
       for (std::size_t k = 0; k < whole["cells"].size(); ++k)
         out.cells.push_back(json_cell(whole["cells"][k], static_cast<std::int64_t>(k), path + ": cell " + std::to_string(k)));
+    } else if (is_pvs_lines_header(text)) {
+      // The JSON-lines file of `exactvis pvs` (a header line, then one cell per line): its own reader.
+      out.format = "json-lines";
+      const PvsLines lines = read_pvs_lines(path);
+      for (const auto& [index, cell] : lines.cells)
+        out.cells.push_back(json_cell(nlohmann::json::parse(cell.dump()), index, path + ": cell " + std::to_string(index)));
     } else {
       // JSON lines: every non-blank line one cell object (a single-line file without "cells" too).
       out.format = "json-lines";

@@ -4,8 +4,9 @@
 //   - the PVS JSON of `exactvis pvs` (issue #11): {"cells": [{"box": [...], "visible": [ids...], ...}, ...]};
 //     "box", "witnesses", "objects" and "stats" are optional and only "box" is used (it must then equal the
 //     cells file's cell of the same index);
-//   - its compact form, JSON lines: one such cell object per line, with an optional "cell" index (else the
-//     line's order among the cell lines);
+//   - its compact form, JSON lines (`exactvis pvs --jsonl`: a header line with "cell_count", then one cell
+//     object per line with its "cell" index; read with io/pvs_json.hpp's read_pvs_lines), or plain JSON lines
+//     without the header: one cell object per line, with an optional "cell" index (else the line's order);
 //   - plain text, one line per cell: `cell_index: id id id ...` (ids separated by spaces or tabs; blank lines
 //     and lines starting with '#' are skipped).
 // Ids are the scene's stable triangle ids (docs/theory.md §4). A cell of the cells file that the PVS does not

@@ -1,13 +1,15 @@
 #include "region/pvs_check.hpp"
 
+#include "region/exact_pvs.hpp"
+
 #include <stdexcept>
 #include <string>
 
 namespace exactvis::region {
 
-PvsCheck check_reported_pvs(const Scene& scene, const TriangleIndex& index, const RationalBox3& cell,
-                            const std::vector<std::int64_t>& reported, const CellVisibilityOptions& options) {
-  const auto n = static_cast<std::int64_t>(scene.triangles.size());
+PvsCheck check_reported_pvs(const PvsContext& context, const RationalBox3& cell,
+                            const std::vector<std::int64_t>& reported, const PvsOptions& options) {
+  const auto n = static_cast<std::int64_t>(context.scene().triangles.size());
   PvsCheck out;
   out.reported_visible.assign(static_cast<std::size_t>(n), false);
   for (const std::int64_t t : reported) {
@@ -16,22 +18,20 @@ PvsCheck check_reported_pvs(const Scene& scene, const TriangleIndex& index, cons
     if (!out.reported_visible[static_cast<std::size_t>(t)]) ++out.reported;
     out.reported_visible[static_cast<std::size_t>(t)] = true;
   }
-  std::vector<std::int64_t> all(static_cast<std::size_t>(n));
-  for (std::int64_t i = 0; i < n; ++i) all[static_cast<std::size_t>(i)] = i;
-  const CellVisibility cv = visibility_from_source(scene, index, {cell, {}}, all, options);
-  out.stats = cv.stats;
-  out.exact = cv.visible;
+  const CellPvs pvs = exact_cell_pvs(context, cell, options);
+  out.stats = pvs.stats;
+  out.exact = static_cast<std::int64_t>(pvs.visible.size());
   out.exactly_visible.assign(static_cast<std::size_t>(n), false);
-  for (const VisibilityResult& r : cv.results) {
-    const auto i = static_cast<std::size_t>(r.triangle_index);
-    out.exactly_visible[i] = r.visible;
-    if (r.visible && !out.reported_visible[i]) {
-      out.false_invisible.push_back(r.triangle_index);
-      out.false_invisible_witness.push_back(*r.witness);
-    } else if (!r.visible && out.reported_visible[i]) {
-      out.false_visible.push_back(r.triangle_index);
+  for (const VisibleTriangle& v : pvs.visible) {
+    out.exactly_visible[static_cast<std::size_t>(v.index)] = true;
+    if (!out.reported_visible[static_cast<std::size_t>(v.index)]) {
+      out.false_invisible.push_back(v.index);
+      out.false_invisible_witness.push_back(*v.witness);
     }
   }
+  for (std::int64_t i = 0; i < n; ++i)
+    if (out.reported_visible[static_cast<std::size_t>(i)] && !out.exactly_visible[static_cast<std::size_t>(i)])
+      out.false_visible.push_back(i);
   return out;
 }
 

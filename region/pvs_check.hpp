@@ -3,11 +3,11 @@
 // triangles are hidden (false visible: a conservative tool's overestimate) and which missing triangles are
 // visible (false invisible: an aggressive tool's error), each false invisible one with a witness.
 //
-// Every triangle of the scene is decided once by the exact from-region query (region/cell_visibility.hpp:
-// a listed triangle to see whether it is hidden, a missing one to see whether it is visible), so the exact
-// PVS size comes for free; no separate PVS pass is made. Answers follow docs/theory.md §5.1 (positive
-// measure of free lines); hidden is proved, visible carries an exactly re-checked witness.
-#include "region/cell_visibility.hpp"
+// The exact answer is the exact PVS method's (region/exact_pvs.hpp: every triangle decided once, a listed
+// one to see whether it is hidden, a missing one to see whether it is visible), so the exact PVS size comes
+// with it; no second per-triangle loop. Answers follow docs/theory.md §5.1 (positive measure of free lines);
+// hidden is proved, visible carries an exactly re-checked witness.
+#include "region/cell_pvs.hpp"
 
 #include <cstdint>
 #include <vector>
@@ -22,15 +22,14 @@ struct PvsCheck {
   std::vector<Witness> false_invisible_witness; // parallel to false_invisible
   std::int64_t exact = 0;                       // size of the exact PVS
   std::int64_t reported = 0;                    // distinct triangles listed
-  VisibilityStats stats;                        // accumulated over the queries
+  CellPvsStats stats;                           // of the exact PVS computation
 };
 
-// Input: the scene, its index, the cell (lo < hi in every coordinate), the triangles the other tool lists
-// (indices into Scene::triangles, any order, repeats allowed) and the query options (threads, progress
-// callback once per triangle). Output: see PvsCheck; independent of the thread count. Throws
-// std::invalid_argument for an index out of range or an invalid cell. Cost: one exact from-region query per
-// scene triangle (region/from_region_visibility.hpp), divided among the threads.
-PvsCheck check_reported_pvs(const Scene& scene, const TriangleIndex& index, const RationalBox3& cell,
-                            const std::vector<std::int64_t>& reported, const CellVisibilityOptions& options = {});
+// Input: the context (scene, index, ray caster), the cell (lo < hi in every coordinate), the triangles the
+// other tool lists (indices into Scene::triangles, any order, repeats allowed) and the exact method's
+// options (threads, progress). Output: see PvsCheck; independent of the thread count. Throws
+// std::invalid_argument for an index out of range or an invalid cell. Cost: exact_cell_pvs.
+PvsCheck check_reported_pvs(const PvsContext& context, const RationalBox3& cell,
+                            const std::vector<std::int64_t>& reported, const PvsOptions& options = {});
 
 }  // namespace exactvis::region

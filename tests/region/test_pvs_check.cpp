@@ -54,10 +54,10 @@ std::vector<std::int64_t> indices_where(const std::vector<bool>& v, bool value) 
   return out;
 }
 
-// The exact answer checked by the oracle: witnesses of the visible triangles (from a check of an empty PVS,
+// The exact answer (region/exact_pvs through the check) verified by the oracle: witnesses of the visible triangles (from a check of an empty PVS,
 // where every visible triangle is false invisible) valid, hidden ones not refuted by sampling.
 std::vector<bool> oracle_checked_answer(const Scene& scene, const RationalBox3& cell) {
-  const PvsCheck c = check_reported_pvs(scene, TriangleIndex(scene), cell, {});
+  const PvsCheck c = check_reported_pvs(PvsContext(scene), cell, {});
   EXPECT_TRUE(c.false_visible.empty());
   EXPECT_EQ(c.reported, 0);
   EXPECT_EQ(c.exact, static_cast<std::int64_t>(c.false_invisible.size()));
@@ -94,9 +94,9 @@ void expect_planted_errors_found(const Scene& scene, const RationalBox3& cell, s
   std::sort(removed.begin(), removed.end());
   std::sort(added.begin(), added.end());
 
-  CellVisibilityOptions options;
+  PvsOptions options;
   options.threads = 2;
-  const PvsCheck c = check_reported_pvs(scene, TriangleIndex(scene), cell, reported, options);
+  const PvsCheck c = check_reported_pvs(PvsContext(scene), cell, reported, options);
   EXPECT_EQ(c.false_invisible, removed);
   EXPECT_EQ(c.false_visible, added);
   EXPECT_EQ(c.exact, static_cast<std::int64_t>(visible.size()));
@@ -112,7 +112,7 @@ TEST(PvsCheck, PlantedErrorsFoundOnGeneratedTown) {
 }
 
 TEST(PvsCheck, PlantedErrorsFoundOnGeneratedForest) {
-  const Scene scene = generate_scene("forest", 80, 2);
+  const Scene scene = generate_scene("forest", 60, 2);
   const Box3 box = bounding_box(scene);
   const Exact cx = (Exact(box.lo.x) + Exact(box.hi.x)) / 2, cy = (Exact(box.lo.y) + Exact(box.hi.y)) / 2;
   const RationalBox3 cell{{cx - 1, cy - 1, Exact(box.lo.z) + Exact(1, 4)}, {cx + 1, cy + 1, Exact(box.lo.z) + 1}};
@@ -153,8 +153,9 @@ TEST(PvsCheck, RefusesIndicesOutOfRange) {
   SceneBuilder b;
   b.triangle({0, 0, 0}, {1, 0, 0}, {0, 1, 0});
   const RationalBox3 cell = exact_box({{0, 0, 1}, {1, 1, 2}});
-  EXPECT_THROW(check_reported_pvs(b.scene, TriangleIndex(b.scene), cell, {1}), std::invalid_argument);
-  EXPECT_THROW(check_reported_pvs(b.scene, TriangleIndex(b.scene), cell, {-1}), std::invalid_argument);
+  const PvsContext context(b.scene);
+  EXPECT_THROW(check_reported_pvs(context, cell, {1}), std::invalid_argument);
+  EXPECT_THROW(check_reported_pvs(context, cell, {-1}), std::invalid_argument);
 }
 
 }  // namespace

@@ -152,7 +152,7 @@ TEST_F(ValidateCli, BadFilesAreOneLineErrorsWithoutOutput) {
       {"--cells " + path("cells.json") + " --pvs " + path("range.txt"), path("range.txt") + ": line 1: cell 2 is out of range"},
       {"--cells " + path("cells.json") + " --pvs " + path("bad.txt"), path("bad.txt") + ": line 1: 'zero' is not a cell index"},
       {"--cells " + path("cells.json") + " --pvs " + path("bad.json"), path("bad.json") + ": not a JSON document"},
-      {"--cells " + path("badcells.json") + " --pvs " + path("good.txt"), path("badcells.json") + ": cell 0: expected an array of 6 numbers"},
+      {"--cells " + path("badcells.json") + " --pvs " + path("good.txt"), path("badcells.json") + ": cell 0 is not a list of 6 numbers"},
       {"--cells " + path("cells.json") + " --pvs " + path("missing.txt"), path("missing.txt") + ": cannot be read"},
       {"--pvs " + path("good.txt"), "--cells: required"},
   };
@@ -163,4 +163,24 @@ TEST_F(ValidateCli, BadFilesAreOneLineErrorsWithoutOutput) {
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
     EXPECT_FALSE(fs::exists(path("out.json"))) << c.args;
   }
+}
+
+TEST_F(ValidateCli, ChecksThePvsFilesOfExactvisPvs) {
+  // The exact PVS document has no errors; the sampled PVS in JSON lines (header + cells) lists no hidden
+  // triangle and misses what it misses.
+  const std::string common = path("slit.obj") + " --cells " + path("cells.json") + " -q";
+  ASSERT_EQ(run("pvs " + common + " --json -o " + path("exact.json")).status, 0);
+  ASSERT_EQ(run("pvs " + common + " --method sampled --rays 3000 --jsonl -o " + path("sampled.jsonl")).status, 0);
+  const CliRun e = run("validate " + common + " --pvs " + path("exact.json") + " --json");
+  ASSERT_EQ(e.status, 0) << e.err;
+  const auto je = nlohmann::json::parse(e.out);
+  EXPECT_EQ(je["totals"]["false_visible"], 0);
+  EXPECT_EQ(je["totals"]["false_invisible"], 0);
+  EXPECT_EQ(je["totals"]["exact"], je["totals"]["reported"]);
+  const CliRun s = run("validate " + common + " --pvs " + path("sampled.jsonl") + " --json");
+  ASSERT_EQ(s.status, 0) << s.err;
+  const auto js = nlohmann::json::parse(s.out);
+  EXPECT_EQ(js["totals"]["false_visible"], 0);
+  EXPECT_EQ(js["totals"]["exact"], je["totals"]["exact"]);
+  EXPECT_GT(js["totals"]["reported"], 0);
 }

@@ -1,0 +1,269 @@
+// `exactvis pvs SCENE... (--grid NX,NY,NZ [--box X0,Y0,Z0,X1,Y1,Z1] | --cells cells.json) [--json] [-o FILE]
+//  [--jsonl] [--resume] [--no-witnesses] [--vtp DIR] [--method exact] [--shard K/N] [--threads N] [-q]`:
+// the exact potentially visible set of every view cell, with a witness per visible triangle (docs/cli.md).
+#include "apps/cli_util.hpp"
+#include "apps/command_registry.hpp"
+#include "apps/pvs_run.hpp"
+#include "io/atomic_file.hpp"
+#include "io/load_scene.hpp"
+#include "io/pvs_json.hpp"
+#include "io/view_cells_json.hpp"
+#include "io/write_visibility_vtp.hpp"
+#include "region/pvs_method.hpp"
+#include "region/view_cell_grid.hpp"
+#include "util/cells_progress.hpp"
+
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+
+namespace {
+
+using namespace exactvis;
+using app::split;
+using app::trim;
+
+struct PvsCliOptions {
+  std::vector<std::string> scenes;
+  std::string grid, box, cells;
+  bool json = false, jsonl = false, resume = false, no_witnesses = false, quiet = false;
+  std::string output, vtp, method = "exact", shard, seed = "1";
+  int samples = 48, threads = 0;
+  std::int64_t rays = -1;  // -1: the method's default (exact: 8 per triangle; sampled: 100000 per cell)
+};
+
+std::array<long, 3> parse_grid(const std::string& text) {
+  const auto parts = split(text, ',');
+  const std::string msg = "--grid: need 3 whole numbers NX,NY,NZ, each 1 .. 100000";
+  if (parts.size() != 3) throw std::invalid_argument(msg);
+  std::array<long, 3> n{};
+  for (int k = 0; k < 3; ++k) {
+    const std::string t = trim(parts[k]);
+    if (t.empty() || t.size() > 6 || t.find_first_not_of("0123456789") != std::string::npos)
+      throw std::invalid_argument(msg + " ('" + t + "')");
+    n[k] = std::stol(t);
+    if (n[k] < 1 || n[k] > 100000) throw std::invalid_argument(msg + " ('" + t + "')");
+  }
+  if (n[0] * n[1] * n[2] > 100'000'000) throw std::invalid_argument("--grid: more than 10^8 cells");
+  return n;
+}
+
+app::Shard parse_shard(const std::string& text) {
+  const std::string msg = "--shard: need K/N with whole numbers 0 <= K < N";
+  const auto parts = split(text, '/');
+  if (parts.size() != 2) throw std::invalid_argument(msg);
+  const std::uint64_t k = app::parse_uint64(trim(parts[0]), "--shard");
+  const std::uint64_t n = app::parse_uint64(trim(parts[1]), "--shard");
+  if (n < 1 || k >= n || n > 1'000'000'000) throw std::invalid_argument(msg + " ('" + text + "')");
+  return {static_cast<std::int64_t>(k), static_cast<std::int64_t>(n)};
+}
+
+bool ends_with(const std::string& s, const std::string& tail) {
+  return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
+}
+
+void write_cell_vtp(const std::string& dir, const Scene& scene, std::int64_t cell, const region::CellPvs& pvs) {
+  std::vector<int> state(scene.triangles.size(), 0);
+  std::vector<WitnessSegment> segs;
+  auto dbl = [](const RationalPoint3& p) {
+    return Point3{CGAL::to_double(p.x), CGAL::to_double(p.y), CGAL::to_double(p.z)};
+  };
+  for (const auto& v : pvs.visible) {
+    state[v.index] = 1;
+    if (v.witness) segs.push_back({scene.triangles[v.index].id, dbl(v.witness->p), dbl(v.witness->q)});
+  }
+  write_visibility_vtp((std::filesystem::path(dir) / ("cell_" + std::to_string(cell) + ".vtp")).string(), scene,
+                       state, segs);
+}
+
+int run_pvs(const PvsCliOptions& o) {
+  // ---- options (all checked before any work)
+  if (o.grid.empty() == o.cells.empty()) throw std::invalid_argument("give exactly one of --grid and --cells");
+  if (!o.box.empty() && o.grid.empty()) throw std::invalid_argument("--box: only with --grid");
+  const region::PvsMethod method = [&] {
+    try {
+      return region::parse_pvs_method(o.method);
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument(std::string("--method: ") + e.what());
+    }
+  }();
+  if (o.samples < 0) throw std::invalid_argument("--samples must be >= 0");
+  if (o.rays < -1) throw std::invalid_argument("--rays must be >= 0");
+  region::PvsOptions po;
+  po.query.samples = o.samples;
+  po.query.seed = app::parse_uint64(o.seed, "--seed");
+  if (method == region::PvsMethod::sampled) po.cell_rays = o.rays >= 0 ? o.rays : 100000;
+  else if (o.rays > 1000000) throw std::invalid_argument("--rays: at most 1000000 rays per triangle");
+  else po.rays = o.rays >= 0 ? static_cast<int>(o.rays) : 8;
+  po.threads = app::check_thread_count(o.threads, "--threads");
+  const bool sharded = !o.shard.empty();
+  const app::Shard shard = sharded ? parse_shard(o.shard) : app::Shard{};
+  const bool lines = o.jsonl || ends_with(o.output, ".jsonl");
+  if (o.resume && (!lines || o.output.empty()))
+    throw std::invalid_argument("--resume: needs the JSON-lines output -o FILE.jsonl (or --jsonl -o FILE)");
+  if (o.json && o.jsonl) throw std::invalid_argument("--json and --jsonl: choose one output form");
+  const std::array<long, 3> grid = o.grid.empty() ? std::array<long, 3>{} : parse_grid(o.grid);
+  std::optional<region::RationalBox3> box;
+  if (!o.box.empty()) box = app::parse_box(o.box, "--box");
+
+  app::CellScheduler scheduler;  // MPI_Init here when started by mpirun
+
+  // ---- input
+  const Scene scene = load_scenes(o.scenes);
+  std::vector<region::RationalBox3> cells;
+  if (!o.cells.empty()) {
+    cells = read_view_cells(o.cells);
+  } else {
+    if (!box) {
+      if (scene.triangles.empty()) throw std::invalid_argument("--grid: the scene is empty; give --box");
+      box = region::exact_box(bounding_box(scene));
+      for (int k = 0; k < 3; ++k)
+        if (!(box->lo[k] < box->hi[k]))
+          throw std::invalid_argument(std::string("--grid: the scene's bounding box is flat in ") + "xyz"[k] +
+                                      "; give --box");
+    }
+    cells = region::grid_cells(*box, grid);
+  }
+  const OrderedJson scene_label = o.scenes.size() == 1 ? OrderedJson(o.scenes[0]) : OrderedJson(o.scenes);
+  const auto cell_count = static_cast<std::int64_t>(cells.size());
+  std::optional<OrderedJson> shard_json;
+  if (sharded) shard_json = OrderedJson{{"index", shard.index}, {"count", shard.count}, {"cell_count", cell_count}};
+  std::vector<std::int64_t> mine;
+  for (std::int64_t c = shard.index; c < cell_count; c += shard.count) mine.push_back(c);
+
+  // ---- outputs: the document is staged and committed at the end; JSON lines are appended as cells finish
+  const bool with_witnesses = !o.no_witnesses;
+  OrderedJson header = pvs_lines_header(scene_label, static_cast<std::int64_t>(scene.triangles.size()), cell_count,
+                                        region::pvs_method_name(method), with_witnesses);
+  if (shard_json) header["shard"] = *shard_json;
+  std::vector<OrderedJson> done_cells;  // CELLs of this shard (finished earlier or now)
+  std::vector<char> finished(cells.size(), 0);
+  std::unique_ptr<OutputFiles> doc_output;
+  std::ofstream lines_out;
+  const bool writer = scheduler.writer();
+  if (writer && !lines && !o.output.empty()) doc_output = std::make_unique<OutputFiles>(std::vector<std::string>{o.output});
+  if (lines && !o.output.empty()) {  // every rank reads what is finished; only the writer touches the file
+    std::uint64_t keep = 0;
+    if (o.resume && std::filesystem::exists(o.output)) {
+      const PvsLines old = read_pvs_lines(o.output);
+      if (old.header != header)
+        throw std::invalid_argument(o.output + ": --resume: the file was written by a different run (header " +
+                                    old.header.dump() + ", this run " + header.dump() + ")");
+      for (const auto& [c, j] : old.cells) {
+        if (!j.contains("box") || j["box"] != box_json(cells[c]))
+          throw std::invalid_argument(o.output + ": --resume: cell " + std::to_string(c) + " has a different box");
+        finished[c] = 1;
+        done_cells.push_back(j);
+      }
+      keep = old.valid_bytes;
+    }
+    if (!writer) {
+    } else if (keep > 0) {
+      std::filesystem::resize_file(o.output, keep);  // drops a partial last line
+      lines_out.open(o.output, std::ios::app);
+    } else {
+      lines_out.open(o.output, std::ios::trunc);
+      lines_out << header.dump() << "\n" << std::flush;
+    }
+    if (writer && !lines_out) throw OutputError(o.output + ": cannot write");
+  } else if (lines && writer) {
+    std::cout << header.dump() << "\n" << std::flush;
+  }
+  if (!o.vtp.empty()) {
+    std::error_code ec;
+    std::filesystem::create_directories(o.vtp, ec);
+    if (!std::filesystem::is_directory(o.vtp)) throw OutputError(o.vtp + ": cannot create the --vtp directory");
+  }
+
+  std::vector<app::CellJob> todo;
+  for (const std::int64_t c : mine)
+    if (!finished[c]) todo.push_back({c, cells[c]});
+
+  // ---- the cells
+  const region::PvsContext context(scene);
+  {
+    CellsProgress bar("pvs", mine.size(), "triangles", writer && app::progress_wanted(o.quiet));
+    for (std::size_t i = 0; i < mine.size() - todo.size(); ++i) bar.finish_item();
+    app::PvsRunHooks hooks;
+    hooks.compute = [&](const app::CellJob& job) {
+      bar.start_item(scene.triangles.size());
+      region::PvsOptions cell_options = po;
+      cell_options.on_progress = [&bar](std::int64_t d) { bar.item_steps(static_cast<std::uint64_t>(d)); };
+      const region::CellPvs pvs = region::compute_cell_pvs(method, context, job.box, cell_options);
+      if (method == region::PvsMethod::sampled && !o.quiet)
+        std::cerr << "cell " << job.index << ": " << pvs.stats.rays_cast << " rays in " << pvs.stats.seconds << " s ("
+                  << (pvs.stats.seconds > 0 ? static_cast<double>(pvs.stats.rays_cast) / pvs.stats.seconds : 0.0)
+                  << " rays/s), " << pvs.stats.visible << " triangles confirmed\n";
+      if (!o.vtp.empty()) write_cell_vtp(o.vtp, scene, job.index, pvs);
+      return pvs_cell_json(scene, job.index, pvs, with_witnesses);
+    };
+    hooks.finished = [&](const OrderedJson& cell) {
+      bar.finish_item();
+      if (lines) {
+        std::ostream& out = o.output.empty() ? std::cout : static_cast<std::ostream&>(lines_out);
+        out << cell.dump() << "\n" << std::flush;
+        if (!out) throw OutputError((o.output.empty() ? std::string("stdout") : o.output) + ": cannot write");
+      } else if (!o.json && o.output.empty()) {
+        std::cout << "cell " << cell["cell"].get<std::int64_t>() << ": " << cell["visible"].size() << " of "
+                  << scene.triangles.size() << " triangles visible, " << cell["objects"].size() << " of "
+                  << scene.objects.size() << " objects\n";
+      }
+      done_cells.push_back(cell);
+    };
+    scheduler.run(todo, hooks);
+  }
+  if (!writer) return 0;  // an MPI worker rank: rank 0 writes the outputs
+
+  // ---- the document
+  if (!lines) {
+    const OrderedJson doc = pvs_document(scene_label, static_cast<std::int64_t>(scene.triangles.size()),
+                                         std::move(done_cells), shard_json);
+    if (doc_output) {
+      doc_output->write(o.output, [&](const std::string& temp) {
+        std::ofstream out(temp);
+        out << doc.dump() << "\n";
+        return static_cast<bool>(out);
+      });
+      doc_output->commit();
+    } else if (o.json) {
+      std::cout << doc.dump() << "\n";
+    }
+  }
+  return 0;
+}
+
+const exactvis::app::CommandRegistration registration("pvs", 110, [](CLI::App& parent) {
+  auto o = std::make_shared<PvsCliOptions>();
+  CLI::App* sub = parent.add_subcommand(
+      "pvs",
+      "Exact potentially visible sets: for every view cell, the visible triangles and objects, each visible "
+      "triangle with an exactly checked witness segment (docs/theory.md section 5; runs under mpirun too)");
+  sub->add_option("scene", o->scenes, "Scene files (.obj .ply .off .stl), loaded as one scene")->required();
+  sub->add_option("--grid", o->grid, "View cells: an NX,NY,NZ grid over the scene's bounding box (or --box)");
+  sub->add_option("--box", o->box, "The box the --grid divides: X0,Y0,Z0,X1,Y1,Z1 (numbers or num/den)");
+  sub->add_option("--cells", o->cells, "View cells file {\"cells\": [[x0,y0,z0,x1,y1,z1], ...]}");
+  sub->add_flag("--json", o->json, "The result as one JSON document (on stdout, or in the -o file)");
+  sub->add_option("-o,--output", o->output,
+                  "Write the result to this file: a JSON document, or JSON lines (one cell per line, written as "
+                  "each cell finishes) when the name ends in .jsonl or --jsonl is given");
+  sub->add_flag("--jsonl", o->jsonl, "The compact form: JSON lines, a header line then one line per cell");
+  sub->add_flag("--resume", o->resume, "With JSON-lines output: keep the cells the file already has, compute the rest");
+  sub->add_flag("--no-witnesses", o->no_witnesses, "Leave the witness segments out of the output");
+  sub->add_option("--vtp", o->vtp, "Write DIR/cell_<i>.vtp: the scene coloured visible/hidden for each cell");
+  sub->add_option("--method", o->method,
+                  "PVS method: exact (every triangle decided exactly) or sampled (random rays per cell, each hit "
+                  "confirmed exactly: never lists a hidden triangle, may miss visible ones)")
+      ->capture_default_str();
+  sub->add_option("--shard", o->shard, "Compute only cells K, K+N, K+2N, ... (job arrays; join with pvs-merge)");
+  sub->add_option("--threads", o->threads, "Worker threads: 0 = all cores (default), else 1 .. 1024");
+  sub->add_option("--samples", o->samples, "Random segments per source/target pair in the exact query")
+      ->capture_default_str();
+  sub->add_option("--rays", o->rays,
+                  "exact: Embree rays per triangle proposing witnesses (default 8); sampled: random rays per cell "
+                  "(default 100000); every hit re-checked exactly");
+  sub->add_option("--seed", o->seed, "Seed of the sampling (answers do not depend on it)")->capture_default_str();
+  sub->add_flag("-q,--quiet", o->quiet, "No progress bar on stderr");
+  return [o]() { return run_pvs(*o); };
+});
+
+}  // namespace

@@ -1,0 +1,31 @@
+#include "region/cell_pvs.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace exactvis::region {
+
+PvsContext::PvsContext(const Scene& scene) : scene_(scene), index_(scene), rays_(scene) {
+  if (scene.triangles.empty()) return;
+  const Box3 b = bounding_box(scene);
+  const double dx = b.hi.x - b.lo.x, dy = b.hi.y - b.lo.y, dz = b.hi.z - b.lo.z;
+  diagonal_ = std::sqrt(dx * dx + dy * dy + dz * dz);
+}
+
+std::vector<std::string> visible_objects(const Scene& scene, const CellPvs& pvs) {
+  std::vector<char> seen(scene.objects.size(), 0);
+  for (const auto& v : pvs.visible) seen[scene.triangles[v.index].object] = 1;
+  std::vector<std::string> out;
+  for (std::size_t o = 0; o < seen.size(); ++o)
+    if (seen[o]) out.push_back(scene.objects[o].name);
+  return out;
+}
+
+void check_view_cell(const RationalBox3& cell) {
+  for (int k = 0; k < 3; ++k)
+    if (!(cell.lo[k] < cell.hi[k]))
+      throw std::invalid_argument(std::string("view cell is empty or inverted in ") + "xyz"[k] +
+                                  " (need lo < hi in every coordinate)");
+}
+
+}  // namespace exactvis::region

@@ -1,0 +1,81 @@
+#pragma once
+// The potentially visible set (PVS) of one view cell: the types every PVS method shares (the exact method
+// region/exact_pvs.hpp; the dispatch over methods region/pvs_method.hpp), and the scene context they are
+// computed in (the scene, its exact triangle index and its float ray caster, built once for all cells).
+//
+// Conventions (docs/theory.md §5.1, §5.6): a triangle is visible from the closed cell when the lines from the
+// cell to its relative interior that miss every other closed triangle have positive measure; an object is
+// visible when one of its triangles is. Cells inside geometry are allowed.
+#include "kernel/float_ray_caster.hpp"
+#include "kernel/scene.hpp"
+#include "kernel/triangle_index.hpp"
+#include "region/convex_polygon_3.hpp"
+#include "region/visibility_options.hpp"
+#include "region/witness.hpp"
+
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace exactvis::region {
+
+// What every cell of a run is computed against. Builds the AABB tree and the Embree BVH once (O(n log n));
+// `scene` must outlive the context. Queries are const and thread-safe.
+class PvsContext {
+ public:
+  explicit PvsContext(const Scene& scene);
+  const Scene& scene() const { return scene_; }
+  const TriangleIndex& index() const { return index_; }
+  const FloatRayCaster& rays() const { return rays_; }
+  double diagonal() const { return diagonal_; }  // length of the scene's bounding box diagonal
+
+ private:
+  const Scene& scene_;
+  TriangleIndex index_;
+  FloatRayCaster rays_;
+  double diagonal_ = 0;
+};
+
+struct PvsOptions {
+  VisibilityOptions query;  // the exact per-triangle query (its sampling, seed and witness rounding)
+  int rays = 8;             // Embree rays cast per triangle before the exact query (proposals only)
+  std::int64_t cell_rays = 100000;  // method `sampled`: random rays per cell (region/sampled_pvs.hpp)
+  int threads = 0;          // worker threads: 0 = all cores, else 1 .. kMaxThreads
+  // Called with the number of triangles decided so far in the current cell (thread-safe callers only:
+  // it is called from the worker threads), e.g. for a progress bar. May be empty.
+  std::function<void(std::int64_t decided)> on_progress;
+};
+
+struct VisibleTriangle {
+  std::int64_t index = -1;         // into Scene::triangles
+  std::optional<Witness> witness;  // set by the exact method: p in the closed cell, q in relint T, open
+                                   // segment free (checked exactly before it is reported)
+};
+
+// Counters of one cell (deterministic: they do not depend on the thread count).
+struct CellPvsStats {
+  std::int64_t triangles = 0;          // triangles decided (the whole scene)
+  std::int64_t visible = 0;
+  std::int64_t accepted_by_rays = 0;   // visible through an exactly re-checked Embree proposal
+  std::int64_t exact_queries = 0;      // triangles decided by the exact from-region query
+  std::int64_t culled = 0;             // triangles proved hidden by a hidden hierarchy box (no own query)
+  std::int64_t rays_cast = 0;          // method `sampled`: random rays cast from the cell
+  VisibilityStats query;               // accumulated over the exact queries (exact_evaluations left at 0)
+  double seconds = 0;                  // wall-clock time (for benchmarks; not written to JSON files)
+};
+
+struct CellPvs {
+  RationalBox3 cell;
+  std::vector<VisibleTriangle> visible;  // sorted by index
+  CellPvsStats stats;
+};
+
+// Names of the objects (Scene::objects) with at least one visible triangle, in object order.
+std::vector<std::string> visible_objects(const Scene& scene, const CellPvs& pvs);
+
+// Throws std::invalid_argument unless lo < hi in every coordinate ("view cell ... is empty or inverted").
+void check_view_cell(const RationalBox3& cell);
+
+}  // namespace exactvis::region

@@ -1,0 +1,19 @@
+#pragma once
+// The exact PVS of one view cell (method `exact` of `exactvis pvs`): every scene triangle decided exactly.
+//
+// Per triangle T, on all cores: Embree rays from the cell to T propose witnesses, and the first one that
+// passes the exact check (region/ray_witness.hpp) makes T visible; otherwise the exact from-region query of
+// region/from_region_visibility.hpp decides T (visible with an exactly checked witness, or proved hidden).
+// So the answer equals `exactvis visible --cell ... --triangles all` on every triangle (docs/theory.md §5.6).
+#include "region/cell_pvs.hpp"
+
+namespace exactvis::region {
+
+// Input: the context, a cell with lo < hi in every coordinate (else std::invalid_argument), options
+// (threads outside 0 .. kMaxThreads: std::invalid_argument). Output: the visible triangles (sorted by
+// index, each with a witness) and counters. Answers, witnesses and counters do not depend on the thread
+// count (each triangle's random choices are seeded by options.query.seed and its index). Cost: n ray
+// batches plus one exact query per triangle the rays do not accept.
+CellPvs exact_cell_pvs(const PvsContext& context, const RationalBox3& cell, const PvsOptions& options);
+
+}  // namespace exactvis::region
