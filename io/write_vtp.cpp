@@ -117,4 +117,40 @@ void write_segments_vtp(const std::string& path, const std::vector<std::pair<Poi
   write_polylines_vtp(path, lines, per_segment);
 }
 
+void write_surface_with_lines_vtp(const std::string& path, const std::vector<Point3>& points,
+                                  const std::vector<std::array<int, 3>>& triangles,
+                                  const std::vector<std::int64_t>& triangle_values,
+                                  const std::vector<std::vector<Point3>>& polylines,
+                                  const std::vector<std::int64_t>& polyline_values, const std::string& name) {
+  if (triangle_values.size() != triangles.size() || polyline_values.size() != polylines.size())
+    throw OutputError(path + ": one value per triangle and per polyline is needed");
+  vtkNew<vtkPoints> pts;
+  pts->SetDataTypeToDouble();
+  for (const auto& p : points) pts->InsertNextPoint(p.x, p.y, p.z);
+  vtkNew<vtkCellArray> lines, polys;
+  for (const auto& line : polylines) {
+    if (line.size() < 2) throw OutputError(path + ": a polyline needs at least 2 points");
+    std::vector<vtkIdType> ids;
+    for (const auto& p : line) ids.push_back(pts->InsertNextPoint(p.x, p.y, p.z));
+    lines->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
+  }
+  for (const auto& t : triangles) {
+    for (int k : t)
+      if (k < 0 || k >= static_cast<int>(points.size())) throw OutputError(path + ": a triangle point index is out of range");
+    const vtkIdType ids[3] = {t[0], t[1], t[2]};
+    polys->InsertNextCell(3, ids);
+  }
+  vtkNew<vtkPolyData> poly;
+  poly->SetPoints(pts);
+  poly->SetLines(lines);
+  poly->SetPolys(polys);
+  CellArrays arrays;
+  IntArray values{name, polyline_values}, kind{"kind", std::vector<std::int64_t>(polylines.size(), 1)};
+  values.values.insert(values.values.end(), triangle_values.begin(), triangle_values.end());
+  kind.values.resize(polylines.size() + triangles.size(), 2);
+  arrays.ints = {std::move(values), std::move(kind)};
+  add_arrays(poly, arrays, polylines.size() + triangles.size(), path);
+  write_poly(path, poly);
+}
+
 }  // namespace exactvis

@@ -3,6 +3,7 @@
 // atomically (see atomic_file.hpp): on failure an OutputError is thrown and no file is left.
 #include "kernel/scene.hpp"
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <utility>
@@ -38,5 +39,16 @@ void write_polylines_vtp(const std::string& path, const std::vector<std::vector<
 // Convenience: segments as 2-point polylines.
 void write_segments_vtp(const std::string& path, const std::vector<std::pair<Point3, Point3>>& segments,
                         const CellArrays& per_segment = {});
+
+// Input: output path, a triangle surface (points; triangles as point indices) with one `name` value per
+// triangle, and polylines (each >= 2 points) with one `name` value per polyline. Output: one file whose
+// cells are the polylines then the triangles (VTK's cell order), with the cell arrays `name` and "kind"
+// (1 for a polyline, 2 for a triangle). Used for pictures of partitions (a surface coloured by region with
+// the boundary curves). Throws OutputError.
+void write_surface_with_lines_vtp(const std::string& path, const std::vector<Point3>& points,
+                                  const std::vector<std::array<int, 3>>& triangles,
+                                  const std::vector<std::int64_t>& triangle_values,
+                                  const std::vector<std::vector<Point3>>& polylines,
+                                  const std::vector<std::int64_t>& polyline_values, const std::string& name);
 
 }  // namespace exactvis

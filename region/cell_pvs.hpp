@@ -3,7 +3,7 @@
 // region/exact_pvs.hpp; the dispatch over methods region/pvs_method.hpp), and the scene context they are
 // computed in (the scene, its exact triangle index and its float ray caster, built once for all cells).
 //
-// Conventions (docs/theory.md §5.1, §5.6): a triangle is visible from the closed cell when the lines from the
+// Conventions (docs/theory.md §5.1, §5.7): a triangle is visible from the closed cell when the lines from the
 // cell to its relative interior that miss every other closed triangle have positive measure; an object is
 // visible when one of its triangles is. Cells inside geometry are allowed.
 #include "kernel/float_ray_caster.hpp"

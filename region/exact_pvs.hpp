@@ -4,7 +4,7 @@
 // Per triangle T, on all cores: Embree rays from the cell to T propose witnesses, and the first one that
 // passes the exact check (region/ray_witness.hpp) makes T visible; otherwise the exact from-region query of
 // region/from_region_visibility.hpp decides T (visible with an exactly checked witness, or proved hidden).
-// So the answer equals `exactvis visible --cell ... --triangles all` on every triangle (docs/theory.md §5.6).
+// So the answer equals `exactvis visible --cell ... --triangles all` on every triangle (docs/theory.md §5.7).
 #include "region/cell_pvs.hpp"
 
 namespace exactvis::region {

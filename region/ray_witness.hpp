@@ -1,6 +1,6 @@
 #pragma once
 // Float ray casts that *propose* witnesses of from-cell visibility, and the exact re-check that accepts
-// them (docs/theory.md §5.6: floats accept only through an exact check). Used by the exact PVS to decide
+// them (docs/theory.md §5.7: floats accept only through an exact check). Used by the exact PVS to decide
 // the obviously visible triangles before any line-space query.
 #include "region/cell_pvs.hpp"
 
@@ -18,7 +18,7 @@ namespace exactvis::region {
 std::vector<std::int64_t> segment_candidates(const TriangleIndex& index, const RationalPoint3& p,
                                              const RationalPoint3& q, double piece_length);
 
-// The exact acceptance test of a proposed witness (docs/theory.md §5.6): p in the open cell, q in the
+// The exact acceptance test of a proposed witness (docs/theory.md §5.7): p in the open cell, q in the
 // relative interior of triangle `target`, and the closed segment [p, q] meets no other closed scene triangle.
 // Then every segment near (p, q) is free too (the occluders are closed and at positive distance), so T is
 // visible with positive measure; (p, q) is in particular a witness of §5.1. Exact predicates only.

@@ -10,6 +10,8 @@ packages=(
   nlohmann-json3-dev libcli11-dev libgtest-dev
   libzip-dev          # reading Quake 3 .pk3 archives (io/zip_archive)
   assimp-testmodels   # broken model files the bad-input tests use
+  libopenmpi-dev      # MPI::MPI_C, which Debian's VTK rendering targets name (CMakeLists.txt)
+  xvfb libgl1-mesa-dri  # `shadows --png` without a display: Xvfb + Mesa software OpenGL (io/render_png)
 )
 
 missing=()

@@ -1,0 +1,247 @@
+// `exactvis aspect SCENE --orthographic | --perspective | --plane z=H [--json] [-o F] [--vtp F] [--png F]`:
+// the aspect graph of a 3D model (docs/cli.md, docs/theory.md "Aspect graphs of polyhedra").
+#include "apps/cli_util.hpp"
+#include "apps/command_registry.hpp"
+#include "aspect/convex_aspect_graph.hpp"
+#include "aspect/convex_model.hpp"
+#include "aspect/partition_picture.hpp"
+#include "io/atomic_file.hpp"
+#include "io/load_scene.hpp"
+#include "io/render_partition_png.hpp"
+#include "io/write_vtp.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+namespace {
+
+using namespace exactvis;
+using ojson = nlohmann::ordered_json;  // the documented key order
+
+struct AspectOptions {
+  std::vector<std::string> scenes;
+  bool orthographic = false, perspective = false;
+  std::string plane, output, vtp, png;
+  bool json = false, quiet = false;
+};
+
+std::string scene_label(const std::vector<std::string>& files) {
+  std::string s;
+  for (const auto& f : files) s += (s.empty() ? "" : ",") + f;
+  return s;
+}
+
+ojson event_json(const AspectAdjacency3& a) {
+  ojson generators = ojson::array();
+  std::string type;
+  for (const AspectEvent3& e : a.events) {
+    if (type.empty()) type = e.type;
+    else if (type != e.type) type = "EV+EEE";
+    generators.push_back({{"type", e.type}, {"vertex", e.vertex}, {"edge", {e.edge[0], e.edge[1]}},
+                          {"triangles", e.triangles}});
+  }
+  return {{"type", type}, {"generators", generators}};
+}
+
+ojson graph_json(const AspectGraph3& g) {
+  ojson j;
+  j["regions"] = ojson::array();
+  for (std::size_t i = 0; i < g.regions.size(); ++i) {
+    const AspectRegion3& r = g.regions[i];
+    j["regions"].push_back({{"id", i},
+                            {"dimension", r.dimension},
+                            {"aspect", r.aspect},
+                            {"sample", {app::exact_json(r.sample.x), app::exact_json(r.sample.y),
+                                        app::exact_json(r.sample.z)}}});
+  }
+  j["adjacency"] = ojson::array();
+  for (const AspectAdjacency3& a : g.adjacency) j["adjacency"].push_back({a.a, a.b, event_json(a)});
+  j["counts"] = {{"regions", g.regions.size()}, {"edges", g.adjacency.size()}};
+  return j;
+}
+
+std::string summary(const AspectGraph3& g, std::size_t planes) {
+  const bool ortho = g.view == ViewModel::Orthographic, plane = g.view == ViewModel::Plane;
+  std::array<std::size_t, 4> per_dim{0, 0, 0, 0};
+  for (const auto& r : g.regions) ++per_dim[r.dimension];
+  std::string s = std::string(ortho ? "orthographic" : (plane ? "plane" : "perspective")) +
+                  " aspect graph of a convex model with " + std::to_string(planes) + " face planes: " +
+                  std::to_string(g.regions.size()) + " regions (";
+  for (int d = ortho || plane ? 2 : 3; d >= 0; --d)
+    s += std::to_string(per_dim[d]) + " of dimension " + std::to_string(d) + (d ? ", " : "");
+  s += "), " + std::to_string(g.adjacency.size()) + " adjacencies; ";
+  s += ortho ? "sphere cells " + std::to_string(g.cells[0]) + " vertices, " + std::to_string(g.cells[1]) + " arcs, " +
+                   std::to_string(g.cells[2]) + " faces"
+             : std::string(plane ? "cells of the plane" : "cells") + " outside the model " + std::to_string(g.cells[0]) + " vertices, " + std::to_string(g.cells[1]) +
+                   " edges, " + std::to_string(g.cells[2]) + " faces, " + std::to_string(g.cells[3]) + " volumes";
+  return s;
+}
+
+Point3 approx(const Vec3<Exact>& v) { return {CGAL::to_double(v.x), CGAL::to_double(v.y), CGAL::to_double(v.z)}; }
+
+// The pictures of --png: the partition (sphere or plane; none for perspective space) and the model as seen
+// from the samples of up to three regions of the largest dimension (first, middle, last).
+std::vector<PngPanel> png_panels(const Scene& scene, const ConvexModel& model, const AspectGraph3& g, double h) {
+  std::vector<PngPanel> panels;
+  const Box3 b = bounding_box(scene);
+  const Point3 centre{(b.lo.x + b.hi.x) / 2, (b.lo.y + b.hi.y) / 2, (b.lo.z + b.hi.z) / 2};
+  const double size = std::max({b.hi.x - b.lo.x, b.hi.y - b.lo.y, b.hi.z - b.lo.z});
+  const auto up_for = [](const Point3& d) {
+    return std::abs(d.z) > 0.9 * std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z) ? Point3{0, 1, 0} : Point3{0, 0, 1};
+  };
+  if (g.view == ViewModel::Orthographic) {
+    const PartitionPicture pic = sphere_picture(model, g, 5);
+    PngPanel p{pic.points, pic.triangles, pic.triangle_region, pic.curves, {0, 0, 0}, {1, 0.8, 0.6}, true, {0, 0, 1}};
+    panels.push_back(std::move(p));
+  } else if (g.view == ViewModel::Plane) {
+    const double w = std::max(b.hi.x - b.lo.x, b.hi.y - b.lo.y);
+    const PartitionPicture pic = plane_picture(model, g, h, b.lo.x - w, b.lo.y - w, b.hi.x + w, b.hi.y + w, 120);
+    panels.push_back({pic.points, pic.triangles, pic.triangle_region, pic.curves, {centre.x, centre.y, h},
+                      {centre.x, centre.y, h + size}, true, {0, 1, 0}});
+  }
+  std::vector<int> top;
+  for (std::size_t r = 0; r < g.regions.size(); ++r)
+    if (g.regions[r].dimension == g.regions.front().dimension) top.push_back(static_cast<int>(r));
+  std::vector<int> chosen{top.front()};
+  if (top.size() > 2) chosen.push_back(top[top.size() / 2]);
+  if (top.size() > 1) chosen.push_back(top.back());
+  for (int r : chosen) {
+    PngPanel p;
+    p.points = scene.vertices;
+    for (std::size_t i = 0; i < scene.triangles.size(); ++i) {
+      p.triangles.push_back(scene.triangles[i].v);
+      p.values.push_back(model.plane_of[i]);
+    }
+    const Point3 s = approx(g.regions[r].sample);
+    p.focal = centre;
+    if (g.view == ViewModel::Orthographic) {
+      p.eye = {centre.x + s.x, centre.y + s.y, centre.z + s.z};
+      p.up = up_for(s);
+    } else {
+      p.eye = s;
+      p.orthographic = false;
+      // Wide enough to hold the model's bounding sphere, seen from the sample (which may be close to it).
+      const double dist = std::sqrt((s.x - centre.x) * (s.x - centre.x) + (s.y - centre.y) * (s.y - centre.y) +
+                                    (s.z - centre.z) * (s.z - centre.z));
+      const double radius = 0.87 * size;
+      p.view_angle = std::min(160.0, 1.2 * 2 * std::asin(std::min(1.0, radius / std::max(dist, 1e-300))) * 180 / M_PI);
+      p.up = up_for({s.x - centre.x, s.y - centre.y, s.z - centre.z});
+    }
+    panels.push_back(std::move(p));
+  }
+  return panels;
+}
+
+// Cost warning before the work (docs/cli.md): time scaled from docs/performance.md (bench_aspect: 3.9 CPU s
+// for 186 face planes orthographic, growth below m^3; 7.7 s for 62 planes perspective, below m^4).
+std::string cost_warning(std::size_t m, ViewModel view) {
+  const bool ortho = view == ViewModel::Orthographic;
+  const double seconds = ortho ? 3.9 * std::pow(m / 186.0, 3) : 7.7 * std::pow(m / 62.0, 4);
+  if (seconds < 60) return "";
+  std::ostringstream w;
+  w.precision(2);
+  w << "aspect: warning: " << m << " face planes: the " << (ortho ? "orthographic" : "perspective")
+    << " arrangement has O(m^" << (ortho ? 2 : 3) << ") cells at O(m) each; roughly " << seconds
+    << " s (scaled from docs/performance.md)";
+  return w.str();
+}
+
+int run(const AspectOptions& o) {
+  const int views = int(o.orthographic) + int(o.perspective) + int(!o.plane.empty());
+  if (views != 1) throw std::invalid_argument("--orthographic, --perspective or --plane z=H: give exactly one");
+  Exact height(0);
+  if (!o.plane.empty()) {
+    const std::string p = app::trim(o.plane);
+    if (p.size() < 3 || p.compare(0, 2, "z=") != 0)
+      throw std::invalid_argument("--plane: '" + o.plane + "' is not z=H (H a number or num/den)");
+    height = app::parse_exact(p.substr(2), "--plane");
+  }
+  if (!o.vtp.empty() && o.perspective)
+    throw std::invalid_argument("--vtp: pictures of the perspective partition of space are not implemented; use "
+                                "--orthographic (the viewing sphere) or --plane z=H");
+  OutputFiles outputs({o.output, o.vtp, o.png});
+  const Scene scene = load_scenes(o.scenes);
+  const std::string label = scene_label(o.scenes);
+  const ConvexModel model = convex_model(scene);
+  if (!model.convex) {
+    if (o.perspective)
+      throw InputError(label + ": not a closed convex model (" + model.problem +
+                       "); --perspective takes convex models only: use --plane z=H for perspective viewpoints on a "
+                       "plane");
+    if (!o.plane.empty())
+      throw InputError(label + ": not a closed convex model (" + model.problem +
+                       "); --plane z=H on non-convex models is not implemented yet");
+    throw InputError(label + ": not a closed convex model (" + model.problem +
+                     "); the orthographic aspect graph of non-convex models is not implemented yet");
+  }
+  const ViewModel view =
+      o.orthographic ? ViewModel::Orthographic : (o.perspective ? ViewModel::Perspective : ViewModel::Plane);
+  if (const std::string w = cost_warning(model.planes.size(), view); !w.empty() && !o.quiet) std::cerr << w << std::endl;
+  const AspectGraph3 g = [&] {
+    app::FractionProgress bar("aspect: arrangement", app::progress_wanted(o.quiet));
+    return !o.plane.empty() ? convex_aspect_graph_on_plane(scene, model, Vec3<Exact>(0, 0, 1), height, bar.callback())
+                            : convex_aspect_graph(scene, model,
+                                                  o.orthographic ? ViewModel::Orthographic : ViewModel::Perspective,
+                                                  bar.callback());
+  }();
+  const ojson j = graph_json(g);
+  if (!o.output.empty())
+    outputs.write(o.output, [&](const std::string& temp) {
+      std::ofstream out(temp);
+      out << j.dump(1) << "\n";
+      return static_cast<bool>(out);
+    });
+  if (!o.vtp.empty()) {
+    PartitionPicture pic;
+    if (o.orthographic) {
+      pic = sphere_picture(model, g, 6);
+    } else {
+      // The model's box widened by its size on each side.
+      const Box3 b = bounding_box(scene);
+      const double w = std::max(b.hi.x - b.lo.x, b.hi.y - b.lo.y);
+      pic = plane_picture(model, g, CGAL::to_double(height), b.lo.x - w, b.lo.y - w, b.hi.x + w, b.hi.y + w, 240);
+    }
+    outputs.write(o.vtp, [&](const std::string& temp) {
+      write_surface_with_lines_vtp(temp, pic.points, pic.triangles, pic.triangle_region, pic.curves,
+                                   std::vector<std::int64_t>(pic.curves.size(), -1), "region");
+      return true;
+    });
+  }
+  if (!o.png.empty()) {
+    const std::vector<PngPanel> panels = png_panels(scene, model, g, CGAL::to_double(height));
+    outputs.write(o.png, [&](const std::string& temp) { return render_panels_png(temp, panels, 480), true; });
+  }
+  outputs.commit();
+  if (o.json) std::cout << j.dump(1) << "\n";
+  else std::cout << summary(g, model.planes.size()) << "\n";
+  return 0;
+}
+
+const exactvis::app::CommandRegistration registration(
+    "aspect", 230, [](CLI::App& parent) -> std::function<int()> {
+      auto opts = std::make_shared<AspectOptions>();
+      CLI::App* sub = parent.add_subcommand(
+          "aspect", "exact aspect graph of a 3D model: regions of viewpoints with one set of visible triangles");
+      sub->add_option("scene", opts->scenes, "Scene files (.obj .ply .off .stl), loaded as one scene")->required();
+      auto* ort = sub->add_flag("--orthographic", opts->orthographic, "viewpoints are directions (the viewing sphere)");
+      auto* per = sub->add_flag("--perspective", opts->perspective,
+                                "viewpoints are points outside the model (convex models only)");
+      auto* pla = sub->add_option("--plane", opts->plane, "viewpoints on the plane z=H (H a number or num/den; convex models)");
+      ort->excludes(per)->excludes(pla);
+      per->excludes(pla);
+      sub->add_flag("--json", opts->json, "print regions, aspects, adjacency and counts as JSON on stdout");
+      sub->add_option("-o,--output", opts->output, "write the JSON to this file");
+      sub->add_option("--vtp", opts->vtp, "write the partition as VTK PolyData: the viewing sphere (or the plane) coloured by region (cell array "
+                    "\"region\"), with the boundary curves (region -1)");
+      sub->add_option("--png", opts->png, "render a PNG: the partition (sphere or plane) and the model seen from a few regions "
+                    "(VTK offscreen; starts a private Xvfb when DISPLAY is unset)");
+      sub->add_flag("-q,--quiet", opts->quiet, "no progress bar on stderr");
+      return [opts] { return run(*opts); };
+    });
+
+}  // namespace

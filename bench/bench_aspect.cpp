@@ -1,0 +1,90 @@
+// bench_aspect: the exact aspect graph of random convex polytopes (aspect/convex_aspect_graph) against the
+// number of face planes m: regions, adjacencies and time, orthographic and perspective; growth exponents
+// between successive sizes (log time / log m), time per region, and the ratio to the smallest size measured
+// in the same run. docs/performance.md, "Aspect graphs of convex models".
+//
+// Usage: bench_aspect [--points 8,16,32,64,128] [--perspective-points 8,16,32] [--seed S] [--repeat R]
+#include "aspect/convex_aspect_graph.hpp"
+#include "aspect/convex_model.hpp"
+#include "aspect/random_convex_polytope.hpp"
+#include "bench/bench_util.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <time.h>
+
+using namespace exactvis;
+
+namespace {
+
+double cpu_now() {
+  timespec t{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return t.tv_sec + 1e-9 * t.tv_nsec;
+}
+
+struct Row {
+  std::size_t triangles = 0, planes = 0, regions = 0, adjacency = 0;
+  double seconds = 0, wall = 0;
+};
+
+Row measure(int points, std::uint64_t seed, ViewModel view, int repeat) {
+  const Scene s = random_convex_polytope(seed, points, 1 << 20);
+  Row r;
+  r.triangles = s.triangles.size();
+  std::vector<double> times, walls;
+  for (int k = 0; k < repeat; ++k) {
+    const double t0 = cpu_now(), w0 = bench::now();
+    const ConvexModel m = convex_model(s);
+    const AspectGraph3 g = convex_aspect_graph(s, m, view);
+    times.push_back(cpu_now() - t0);
+    walls.push_back(bench::now() - w0);
+    r.planes = m.planes.size();
+    r.regions = g.regions.size();
+    r.adjacency = g.adjacency.size();
+  }
+  std::sort(times.begin(), times.end());
+  std::sort(walls.begin(), walls.end());
+  r.seconds = times[times.size() / 2];
+  r.wall = walls[walls.size() / 2];
+  return r;
+}
+
+void table(const char* title, const std::vector<std::string>& sizes, std::uint64_t seed, ViewModel view, int repeat) {
+  std::printf("%s\n%8s %9s %7s %9s %10s %10s %10s %10s %8s %8s\n", title, "points", "triangles", "planes", "regions",
+              "adjacency", "cpu_s", "wall_s", "us/region", "ratio", "growth");
+  Row first, prev;
+  for (std::size_t i = 0; i < sizes.size(); ++i) {
+    const Row r = measure(std::atoi(sizes[i].c_str()), seed, view, repeat);
+    if (i == 0) first = r;
+    const double growth = i == 0 ? 0 : std::log(r.seconds / prev.seconds) / std::log(double(r.planes) / prev.planes);
+    std::printf("%8s %9zu %7zu %9zu %10zu %10.4f %10.4f %10.2f %8.1f %8.2f\n", sizes[i].c_str(), r.triangles,
+                r.planes, r.regions, r.adjacency, r.seconds, r.wall, 1e6 * r.seconds / r.regions,
+                r.seconds / first.seconds, growth);
+    std::fflush(stdout);
+    prev = r;
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::string points = "8,16,32,64,128", persp = "8,16,32";
+  std::uint64_t seed = 1;
+  int repeat = 3;
+  for (int i = 1; i + 1 < argc; i += 2) {
+    const std::string a = argv[i];
+    if (a == "--points") points = argv[i + 1];
+    else if (a == "--perspective-points") persp = argv[i + 1];
+    else if (a == "--seed") seed = std::strtoull(argv[i + 1], nullptr, 10);
+    else if (a == "--repeat") repeat = std::max(1, std::atoi(argv[i + 1]));
+    else return std::fprintf(stderr, "bench_aspect: unknown option %s\n", a.c_str()), 2;
+  }
+  table("orthographic (regions on the viewing sphere; growth = d log time / d log planes)", bench::split(points), seed,
+        ViewModel::Orthographic, repeat);
+  table("perspective (regions of space outside the model)", bench::split(persp), seed, ViewModel::Perspective, repeat);
+  return 0;
+}

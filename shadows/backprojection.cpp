@@ -1,0 +1,191 @@
+#include "shadows/backprojection.hpp"
+
+#include "kernel/predicates.hpp"
+#include "shadows/exact_planar_kernel.hpp"
+
+#include <CGAL/Boolean_set_operations_2.h>
+#include <CGAL/Polygon_2.h>
+#include <CGAL/Polygon_set_2.h>
+#include <CGAL/Polygon_with_holes_2.h>
+
+#include <algorithm>
+#include <set>
+#include <stdexcept>
+
+namespace exactvis::shadows {
+namespace {
+
+using Polygon2 = CGAL::Polygon_2<PlanarKernel>;
+using PolygonWithHoles2 = CGAL::Polygon_with_holes_2<PlanarKernel>;
+using PolygonSet2 = CGAL::Polygon_set_2<PlanarKernel>;
+
+// The plane through a, b, c oriented so that `inside` has value > 0 (inside not on the plane).
+region::Plane3 oriented_plane(const RationalPoint3& a, const RationalPoint3& b, const RationalPoint3& c,
+                              const RationalPoint3& inside) {
+  region::Plane3 pl = region::plane_through(a, b, c);
+  return pl.value(inside) > 0 ? pl : pl.flipped();
+}
+
+Polygon2 to_polygon2(const PlaneChart& chart, const region::Polygon3& poly) {
+  Polygon2 out;
+  for (const auto& v : poly) {
+    const PlanarPoint q = to_planar(chart.to_2d(v));
+    if (out.size() > 0 && (out.container().back() == q || out.container().front() == q)) continue;
+    out.push_back(q);
+  }
+  if (out.size() >= 3 && out.orientation() == CGAL::CLOCKWISE) out.reverse_orientation();
+  return out;
+}
+
+region::Polygon3 to_polygon3(const PlaneChart& chart, const Polygon2& poly) {
+  region::Polygon3 out;
+  for (auto it = poly.vertices_begin(); it != poly.vertices_end(); ++it) {
+    const auto p = from_planar(*it);
+    out.push_back(chart.to_3d(p[0], p[1]));
+  }
+  return out;
+}
+
+Exact area_of(const PolygonWithHoles2& pwh) {
+  PlanarKernel::FT a = pwh.outer_boundary().area();
+  for (auto h = pwh.holes_begin(); h != pwh.holes_end(); ++h) a += h->area();  // holes are clockwise
+  return from_planar_ft(a);
+}
+
+}  // namespace
+
+const char* light_class_name(LightClass c) {
+  switch (c) {
+    case LightClass::Umbra: return "umbra";
+    case LightClass::Penumbra: return "penumbra";
+    case LightClass::Lit: return "lit";
+  }
+  return "lit";
+}
+
+Backprojection backproject(const Scene& scene, const TriangleIndex& index, const std::vector<int>& light,
+                           const RationalPoint3& p) {
+  Backprojection bp;
+  std::set<std::int64_t> blockers;
+  std::set<int> light_set(light.begin(), light.end());
+  for (int li : light) {
+    const auto lt = region::triangle_points(scene, li);
+    VisibleLightPart part;
+    part.light_triangle = li;
+    part.chart = chart_of_triangle(lt[0], lt[1], lt[2]);
+    const region::Polygon3 light_poly(lt.begin(), lt.end());
+    const Polygon2 light2 = to_polygon2(part.chart, light_poly);
+    part.area_2d = from_planar_ft(light2.area());
+    std::vector<RationalPoint3> hull(lt.begin(), lt.end());
+    hull.push_back(p);
+    const Box3 box = region::enclosing_box(hull);
+    std::vector<Polygon2> hidden;
+    std::vector<std::int64_t> hidden_by;
+    for (std::int64_t ti : index.triangles_meeting_box(box)) {
+      if (ti == li) continue;
+      const auto t = region::triangle_points(scene, ti);
+      const Sign sp = orient3d(t[0], t[1], t[2], p);
+      if (sp == Sign::Zero) continue;  // p in T's plane: hides at most a segment
+      if (orient3d(t[0], t[1], t[2], lt[0]) == Sign::Zero && orient3d(t[0], t[1], t[2], lt[1]) == Sign::Zero &&
+          orient3d(t[0], t[1], t[2], lt[2]) == Sign::Zero)
+        continue;  // T in the light's plane: the open segment (p, q) ends before it
+      region::Polygon3 poly = light_poly;
+      // Beyond T's plane (closed), inside the three planes through p and T's edges (closed).
+      poly = region::clip_polygon(poly, oriented_plane(t[0], t[1], t[2], p).flipped());
+      for (int k = 0; k < 3 && poly.size() >= 3; ++k)
+        poly = region::clip_polygon(poly, oriented_plane(p, t[k], t[(k + 1) % 3], t[(k + 2) % 3]));
+      if (region::is_degenerate(poly)) continue;
+      Polygon2 h2 = to_polygon2(part.chart, poly);
+      if (h2.size() < 3 || h2.area() == 0) continue;
+      hidden.push_back(std::move(h2));
+      hidden_by.push_back(scene.triangles[ti].id);
+    }
+    if (hidden.empty()) {
+      part.pieces.push_back({to_polygon3(part.chart, light2), {}});
+      part.visible_area_2d = part.area_2d;
+    } else {
+      PolygonSet2 hidden_set;
+      hidden_set.join(hidden.begin(), hidden.end());
+      PolygonSet2 visible(light2);
+      visible.difference(hidden_set);
+      std::vector<PolygonWithHoles2> pwhs;
+      visible.polygons_with_holes(std::back_inserter(pwhs));
+      part.visible_area_2d = 0;
+      for (const auto& pwh : pwhs) {
+        VisiblePolygon vp;
+        vp.outer = to_polygon3(part.chart, pwh.outer_boundary());
+        for (auto h = pwh.holes_begin(); h != pwh.holes_end(); ++h) vp.holes.push_back(to_polygon3(part.chart, *h));
+        part.visible_area_2d += area_of(pwh);
+        part.pieces.push_back(std::move(vp));
+      }
+      // A blocker counts when its hidden polygon has positive area inside the light triangle.
+      for (std::size_t k = 0; k < hidden.size(); ++k) blockers.insert(hidden_by[k]);
+    }
+    bp.parts.push_back(std::move(part));
+  }
+  // Fraction: exact when every light triangle lies in the first one's plane (one chart for all).
+  Exact vis = 0, tot = 0;
+  double vis_d = 0, tot_d = 0;
+  bool coplanar = true;
+  const auto first = region::triangle_points(scene, light.front());
+  for (const auto& part : bp.parts) {
+    const auto lt = region::triangle_points(scene, part.light_triangle);
+    for (const auto& v : lt)
+      if (orient3d(first[0], first[1], first[2], v) != Sign::Zero) coplanar = false;
+    // Within one plane, 2D areas in each triangle's own chart are comparable only if the charts agree.
+    if (part.chart.axis != bp.parts.front().chart.axis) coplanar = false;
+    vis += part.visible_area_2d;
+    tot += part.area_2d;
+    vis_d += CGAL::to_double(part.visible_area_2d) * part.chart.area_scale();
+    tot_d += CGAL::to_double(part.area_2d) * part.chart.area_scale();
+  }
+  bp.fraction_exact = coplanar;
+  if (coplanar) {
+    bp.fraction = vis / tot;
+    bp.fraction_value = CGAL::to_double(bp.fraction);
+  } else {
+    bp.fraction_value = tot_d > 0 ? vis_d / tot_d : 0;
+  }
+  const bool none_visible = vis == 0, all_visible = vis == tot;
+  bp.light_class = none_visible ? LightClass::Umbra : (all_visible ? LightClass::Lit : LightClass::Penumbra);
+  bp.blockers.assign(blockers.begin(), blockers.end());
+  return bp;
+}
+
+RationalPoint3 interior_point(const PlaneChart& chart, const VisiblePolygon& piece) {
+  std::vector<std::array<Exact, 2>> outer;
+  std::vector<std::vector<std::array<Exact, 2>>> loops;
+  for (const auto& v : piece.outer) outer.push_back(chart.to_2d(v));
+  loops.push_back(outer);
+  for (const auto& h : piece.holes) {
+    std::vector<std::array<Exact, 2>> l;
+    for (const auto& v : h) l.push_back(chart.to_2d(v));
+    loops.push_back(std::move(l));
+  }
+  // A horizontal line y = y0 strictly between the lowest outer vertex and the next vertex height (of any
+  // loop) crosses the polygon and passes through no vertex.
+  std::vector<Exact> ys;
+  for (const auto& l : loops)
+    for (const auto& v : l) ys.push_back(v[1]);
+  std::sort(ys.begin(), ys.end());
+  ys.erase(std::unique(ys.begin(), ys.end()), ys.end());
+  Exact ymin = outer.front()[1], ymax = ymin;
+  for (const auto& v : outer) ymin = std::min(ymin, v[1]), ymax = std::max(ymax, v[1]);
+  // First gap of distinct vertex heights inside (ymin, ymax).
+  auto it = std::upper_bound(ys.begin(), ys.end(), ymin);
+  if (it == ys.end()) throw std::logic_error("interior_point: degenerate polygon");
+  const Exact y0 = (ymin + *it) / 2;
+  std::vector<Exact> xs;
+  for (const auto& l : loops)
+    for (std::size_t k = 0; k < l.size(); ++k) {
+      const auto& a = l[k];
+      const auto& b = l[(k + 1) % l.size()];
+      if ((a[1] < y0) != (b[1] < y0)) xs.push_back(a[0] + (y0 - a[1]) * (b[0] - a[0]) / (b[1] - a[1]));
+    }
+  std::sort(xs.begin(), xs.end());
+  if (xs.size() < 2) throw std::logic_error("interior_point: no crossing");
+  // Crossings alternate outside/inside (no vertex on the line); the first pair bounds an inside interval.
+  return chart.to_3d((xs[0] + xs[1]) / 2, y0);
+}
+
+}  // namespace exactvis::shadows

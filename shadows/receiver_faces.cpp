@@ -1,0 +1,80 @@
+#include "shadows/receiver_faces.hpp"
+
+#include "shadows/exact_planar_kernel.hpp"
+
+#include <CGAL/Constrained_Delaunay_triangulation_2.h>
+#include <CGAL/Triangulation_face_base_with_info_2.h>
+
+#include <map>
+
+namespace exactvis::shadows {
+namespace {
+
+using Vb = CGAL::Triangulation_vertex_base_2<PlanarKernel>;
+using Fb0 = CGAL::Constrained_triangulation_face_base_2<PlanarKernel>;
+using Fb = CGAL::Triangulation_face_base_with_info_2<int, PlanarKernel, Fb0>;
+using Tds = CGAL::Triangulation_data_structure_2<Vb, Fb>;
+using Cdt = CGAL::Constrained_Delaunay_triangulation_2<PlanarKernel, Tds, CGAL::Exact_intersections_tag>;
+
+}  // namespace
+
+ReceiverFaces receiver_faces(const std::vector<std::vector<std::array<Exact, 2>>>& polylines) {
+  Cdt cdt;
+  const PlanarPoint c0(0, 0), c1(1, 0), c2(0, 1);
+  cdt.insert_constraint(c0, c1);
+  cdt.insert_constraint(c1, c2);
+  cdt.insert_constraint(c2, c0);
+  for (const auto& pl : polylines)
+    for (std::size_t k = 0; k + 1 < pl.size(); ++k) {
+      const PlanarPoint a = to_planar(pl[k]), b = to_planar(pl[k + 1]);
+      if (a != b) cdt.insert_constraint(a, b);
+    }
+  ReceiverFaces out;
+  std::map<Cdt::Vertex_handle, int> vid;
+  for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v) {
+    vid[v] = static_cast<int>(out.vertices.size());
+    out.vertices.push_back(from_planar(v->point()));
+  }
+  for (auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f) f->info() = -1;
+  // Flood fill across unconstrained edges (all finite faces lie in the unit triangle: its sides are
+  // constraints and every point is inside it).
+  std::vector<PlanarKernel::FT> best_area;
+  std::vector<Cdt::Face_handle> best_face;
+  for (auto f0 = cdt.finite_faces_begin(); f0 != cdt.finite_faces_end(); ++f0) {
+    if (f0->info() >= 0) continue;
+    const int id = static_cast<int>(out.faces.size());
+    out.faces.emplace_back();
+    best_area.push_back(-1);
+    best_face.push_back(f0);
+    PlanarKernel::FT area = 0;
+    std::vector<Cdt::Face_handle> stack{f0};
+    f0->info() = id;
+    while (!stack.empty()) {
+      const Cdt::Face_handle f = stack.back();
+      stack.pop_back();
+      const PlanarKernel::FT a = CGAL::area(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point());
+      area += a;
+      ++out.faces[id].triangles;
+      if (a > best_area[id]) best_area[id] = a, best_face[id] = f;
+      for (int k = 0; k < 3; ++k) {
+        const Cdt::Face_handle g = f->neighbor(k);
+        if (cdt.is_infinite(g) || f->is_constrained(k) || g->info() >= 0) continue;
+        g->info() = id;
+        stack.push_back(g);
+      }
+    }
+    out.faces[id].area_uv = from_planar_ft(area);
+  }
+  for (std::size_t id = 0; id < out.faces.size(); ++id) {
+    const auto f = best_face[id];
+    out.faces[id].sample = from_planar(CGAL::centroid(f->vertex(0)->point(), f->vertex(1)->point(),
+                                                      f->vertex(2)->point()));
+  }
+  for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
+    out.triangles.push_back({vid[f->vertex(0)], vid[f->vertex(1)], vid[f->vertex(2)]});
+    out.triangle_face.push_back(f->info());
+  }
+  return out;
+}
+
+}  // namespace exactvis::shadows

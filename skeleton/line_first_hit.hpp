@@ -1,0 +1,29 @@
+#pragma once
+// The first scene triangle met by an open ray along a line with exact coordinates in Q or Q(sqrt D) (the
+// lines of the 3D visibility skeleton's nodes; docs/theory.md section 9, "Maximal free segments").
+#include "kernel/number_types.hpp"
+#include "kernel/root_number.hpp"
+#include "kernel/scene.hpp"
+#include "kernel/triangle_index.hpp"
+#include "kernel/vec3.hpp"
+
+namespace exactvis {
+
+// Input: the scene, its spatial index and bounding box (bounding_box(scene)), a point `origin` on or inside
+// that box and a direction `dir` != 0 (coordinates rational or in one common Q(sqrt D)).
+// Output: the stable id of the closed scene triangle met first by the open ray {origin + s dir : s > 0}
+// (a triangle coplanar with the ray counts from its first point; ties go to the lowest triangle index), or
+// -1 when the ray leaves the scene. Exact. Rational rays go through kernel/ray_first_hit (spatial index);
+// rays in Q(sqrt D) test every triangle exactly (O(n); only EEEE node lines with an irrational root).
+std::int64_t line_first_hit(const Scene& scene, const TriangleIndex& index, const Box3& box,
+                            const Vec3<RootNumber>& origin, const Vec3<RootNumber>& dir);
+
+// True iff the open segment (from, to) (from != to) meets the closed triangle (a, b, c), exactly
+// (coordinates rational or in one Q(sqrt D)).
+bool open_segment_meets_triangle(const Vec3<RootNumber>& from, const Vec3<RootNumber>& to, const Point3& a,
+                                 const Point3& b, const Point3& c);
+
+// True iff every coordinate is rational; then *out receives the rational vector.
+bool rational_vector(const Vec3<RootNumber>& v, Vec3<Exact>* out);
+
+}  // namespace exactvis

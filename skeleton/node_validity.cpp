@@ -1,0 +1,117 @@
+#include "skeleton/node_validity.hpp"
+
+#include "events/tangency.hpp"
+#include "kernel/rational_between.hpp"
+#include "skeleton/line_first_hit.hpp"
+
+#include <algorithm>
+
+namespace exactvis {
+namespace {
+
+using R = RootNumber;
+
+Vec3<R> lift(const Point3& p) { return {R(Exact(p.x)), R(Exact(p.y)), R(Exact(p.z))}; }
+
+bool has_corner(const SceneTriangle& t, int v) { return t.v[0] == v || t.v[1] == v || t.v[2] == v; }
+
+// Edge rule for the plane spanned by the line through x with direction d and the edge e.
+bool edge_rule(const Scene& scene, const SceneAdjacency& adj, const EdgeIds& e, const Vec3<R>& x, const Vec3<R>& d) {
+  const int ei = adj.edge_index(e[0], e[1]);
+  if (ei < 0) return false;
+  const Vec3<R> a = lift(scene.vertices[e[0]]), b = lift(scene.vertices[e[1]]);
+  const Vec3<R> y = x + d;
+  int side = 0;
+  for (int ti : adj.edges[ei].triangles) {
+    const SceneTriangle& t = scene.triangles[ti];
+    int w = t.v[0];
+    for (int c : t.v)
+      if (c != e[0] && c != e[1]) w = c;
+    const int s = CGAL::sign(dot(cross(b - a, y - a), lift(scene.vertices[w]) - a));
+    if (s == 0 || (side != 0 && s != side)) return false;
+    side = s;
+  }
+  return true;
+}
+
+bool in_plane_of(const Scene& scene, std::int64_t face, const Vec3<R>& x, const Vec3<R>& d) {
+  const std::int64_t i = scene.index_of_id(face);
+  if (i < 0) return false;
+  const SceneTriangle& t = scene.triangles[i];
+  const Vec3<R> a = lift(scene.corner(t, 0));
+  const Vec3<R> n = cross(lift(scene.corner(t, 1)) - a, lift(scene.corner(t, 2)) - a);
+  return CGAL::is_zero(dot(n, d)) && CGAL::is_zero(dot(n, x - a));
+}
+
+}  // namespace
+
+std::optional<RootNumber> edge_meeting_parameter(const Vec3<RootNumber>& o, const Vec3<RootNumber>& d,
+                                                 const Vec3<RootNumber>& a, const Vec3<RootNumber>& b) {
+  const Vec3<R> w = b - a;
+  const Vec3<R> c = cross(w, d);
+  const R cc = dot(c, c);
+  if (CGAL::is_zero(cc)) return std::nullopt;
+  return -dot(cross(a - o, d), c) / cc;
+}
+
+bool node_line_valid(const Scene& scene, const SceneAdjacency& adj, const TriangleIndex& index,
+                     const SkeletonNode& node, const Vec3<RootNumber>& dir) {
+  const ExtremalLineKey& k = node.key;
+  const bool face_kind = k.kind == ExtremalLineKind::FVE || k.kind == ExtremalLineKind::FEE;
+  if (!face_kind && k.kind != ExtremalLineKind::VV && k.kind != ExtremalLineKind::VEE &&
+      k.kind != ExtremalLineKind::EEEE)
+    return true;  // contact kinds: valid by definition (header)
+  if (CGAL::is_zero(dot(dir, dir))) return false;
+  const Vec3<R>& o = node.from;
+  // Vertex generators: on the line (true by construction; checked), vertex rule unless a face kind.
+  for (int i = 0; i < k.vertex_count(); ++i) {
+    const int v = k.vertices[i];
+    if (!CGAL::is_zero(dot(cross(lift(scene.vertices[v]) - o, dir), cross(lift(scene.vertices[v]) - o, dir))))
+      return false;
+    if (face_kind) continue;
+    Vec3<Exact> d;
+    if (!rational_vector(dir, &d)) return false;  // lines through a vertex are rational
+    const VertexFan fan = build_vertex_fan(scene, adj, v);
+    const Vec3<Exact> ex{1, 0, 0}, ey{0, 1, 0};
+    const Vec3<Exact> cx = cross(d, ex);
+    const bool parallel_x = CGAL::is_zero(cx.x) && CGAL::is_zero(cx.y) && CGAL::is_zero(cx.z);
+    if (!line_tangent_at_vertex(scene, fan, d, parallel_x ? ey : ex).tangent) return false;
+  }
+  // Edge generators: met in the relative interior, edge rule.
+  for (int i = 0; i < k.edge_count(); ++i) {
+    const Vec3<R> a = lift(scene.vertices[k.edges[i][0]]), b = lift(scene.vertices[k.edges[i][1]]);
+    const auto u = edge_meeting_parameter(o, dir, a, b);
+    if (!u || CGAL::sign(*u) <= 0 || !(*u < R(1))) return false;
+    const Vec3<R> x = a + *u * (b - a);
+    const Vec3<R> off = cross(x - o, dir);
+    if (!CGAL::is_zero(dot(off, off))) return false;  // skew: not met at all
+    if (!edge_rule(scene, adj, k.edges[i], x, dir)) return false;
+  }
+  if (face_kind && !in_plane_of(scene, k.faces[0], o, dir)) return false;
+  // Free: the open spanned segment against the triangles whose boxes meet its (outward-rounded) box.
+  Box3 box;
+  for (int c = 0; c < 3; ++c) {
+    const auto p = CGAL::to_interval(node.from[c]), q = CGAL::to_interval(node.to[c]);
+    box.lo[c] = std::min(p.first, q.first);
+    box.hi[c] = std::max(p.second, q.second);
+  }
+  std::vector<int> face_vertices;
+  if (face_kind) {
+    const SceneTriangle& f = scene.triangles[scene.index_of_id(k.faces[0])];
+    face_vertices.assign(f.v.begin(), f.v.end());
+  }
+  for (const std::int64_t ti : index.candidates_in_box(box)) {
+    const SceneTriangle& t = scene.triangles[ti];
+    bool incident = false;
+    for (int i = 0; i < k.vertex_count() && !incident; ++i) incident = has_corner(t, k.vertices[i]);
+    for (int i = 0; i < k.edge_count() && !incident; ++i)
+      incident = has_corner(t, k.edges[i][0]) && has_corner(t, k.edges[i][1]);
+    for (int v : face_vertices) incident = incident || has_corner(t, v);
+    if (incident) continue;
+    if (open_segment_meets_triangle(node.from, node.to, scene.corner(t, 0), scene.corner(t, 1), scene.corner(t, 2)))
+      return false;
+  }
+  return true;
+}
+
+}  // namespace exactvis
