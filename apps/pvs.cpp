@@ -28,7 +28,8 @@ struct PvsCliOptions {
   std::string grid, box, cells;
   bool json = false, jsonl = false, resume = false, no_witnesses = false, quiet = false, no_hierarchy = false;
   std::string output, vtp, method = "exact", shard, seed = "1";
-  int samples = 48, rays = 8, threads = 0;
+  int samples = 48, threads = 0;
+  std::int64_t rays = -1;  // -1: the method's default (exact: 8 per triangle; sampled: 100000 per cell)
 };
 
 std::array<long, 3> parse_grid(const std::string& text) {
@@ -87,12 +88,14 @@ int run_pvs(const PvsCliOptions& o) {
     }
   }();
   if (o.samples < 0) throw std::invalid_argument("--samples must be >= 0");
-  if (o.rays < 0) throw std::invalid_argument("--rays must be >= 0");
+  if (o.rays < -1) throw std::invalid_argument("--rays must be >= 0");
   region::PvsOptions po;
   po.query.samples = o.samples;
   po.query.seed = app::parse_uint64(o.seed, "--seed");
-  po.rays = o.rays;
   po.hierarchy = !o.no_hierarchy;
+  if (method == region::PvsMethod::sampled) po.cell_rays = o.rays >= 0 ? o.rays : 100000;
+  else if (o.rays > 1000000) throw std::invalid_argument("--rays: at most 1000000 rays per triangle");
+  else po.rays = o.rays >= 0 ? static_cast<int>(o.rays) : 8;
   po.threads = app::check_thread_count(o.threads, "--threads");
   const bool sharded = !o.shard.empty();
   const app::Shard shard = sharded ? parse_shard(o.shard) : app::Shard{};
@@ -188,6 +191,10 @@ int run_pvs(const PvsCliOptions& o) {
       region::PvsOptions cell_options = po;
       cell_options.on_progress = [&bar](std::int64_t d) { bar.item_steps(static_cast<std::uint64_t>(d)); };
       const region::CellPvs pvs = region::compute_cell_pvs(method, context, job.box, cell_options);
+      if (method == region::PvsMethod::sampled && !o.quiet)
+        std::cerr << "cell " << job.index << ": " << pvs.stats.rays_cast << " rays in " << pvs.stats.seconds << " s ("
+                  << (pvs.stats.seconds > 0 ? static_cast<double>(pvs.stats.rays_cast) / pvs.stats.seconds : 0.0)
+                  << " rays/s), " << pvs.stats.visible << " triangles confirmed\n";
       if (!o.vtp.empty()) write_cell_vtp(o.vtp, scene, job.index, pvs);
       return pvs_cell_json(scene, job.index, pvs, with_witnesses);
     };
@@ -244,15 +251,19 @@ const exactvis::app::CommandRegistration registration("pvs", 110, [](CLI::App& p
   sub->add_flag("--resume", o->resume, "With JSON-lines output: keep the cells the file already has, compute the rest");
   sub->add_flag("--no-witnesses", o->no_witnesses, "Leave the witness segments out of the output");
   sub->add_option("--vtp", o->vtp, "Write DIR/cell_<i>.vtp: the scene coloured visible/hidden for each cell");
-  sub->add_option("--method", o->method, "PVS method: exact")->capture_default_str();
+  sub->add_option("--method", o->method,
+                  "PVS method: exact (every triangle decided exactly) or sampled (random rays per cell, each hit "
+                  "confirmed exactly: never lists a hidden triangle, may miss visible ones)")
+      ->capture_default_str();
   sub->add_option("--shard", o->shard, "Compute only cells K, K+N, K+2N, ... (job arrays; join with pvs-merge)");
   sub->add_option("--threads", o->threads, "Worker threads: 0 = all cores (default), else 1 .. 1024");
   sub->add_option("--samples", o->samples, "Random segments per source/target pair in the exact query")
       ->capture_default_str();
-  sub->add_option("--rays", o->rays, "Embree rays per triangle proposing witnesses (each re-checked exactly)")
-      ->capture_default_str();
+  sub->add_option("--rays", o->rays,
+                  "exact: Embree rays per triangle proposing witnesses (default 8); sampled: random rays per cell "
+                  "(default 100000); every hit re-checked exactly");
   sub->add_flag("--no-hierarchy", o->no_hierarchy,
-                "Decide every triangle on its own (no hidden-box culling; same answers, for comparison)");
+                "exact: decide every triangle on its own (no hidden-box culling; same answers, for comparison)");
   sub->add_option("--seed", o->seed, "Seed of the sampling (answers do not depend on it)")->capture_default_str();
   sub->add_flag("-q,--quiet", o->quiet, "No progress bar on stderr");
   return [o]() { return run_pvs(*o); };

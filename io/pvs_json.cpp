@@ -52,6 +52,7 @@ OrderedJson pvs_cell_json(const Scene& scene, std::int64_t cell_index, const reg
                 {"splits", s.query.splits},
                 {"cones_created", s.query.cones_created},
                 {"real_line_tests", s.query.real_line_tests}};
+  if (s.rays_cast > 0) j["stats"]["rays_cast"] = s.rays_cast;  // method `sampled` only
   return j;
 }
 

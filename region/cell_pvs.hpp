@@ -45,6 +45,7 @@ class PvsContext {
 struct PvsOptions {
   VisibilityOptions query;  // the exact per-triangle query (its sampling, seed and witness rounding)
   int rays = 8;             // Embree rays cast per triangle before the exact query (proposals only)
+  std::int64_t cell_rays = 100000;  // method `sampled`: random rays per cell (region/sampled_pvs.hpp)
   int threads = 0;          // worker threads: 0 = all cores, else 1 .. kMaxThreads
   bool hierarchy = true;    // cull subtrees of the triangle BVH whose box is proved hidden (§5.8)
   int box_rays = 32;        // Embree rays per BVH node to its triangles: one reaching the subtree skips the
@@ -70,6 +71,7 @@ struct CellPvsStats {
   std::int64_t culled = 0;             // triangles proved hidden by a hidden hierarchy box (no own query)
   std::int64_t boxes_tested = 0;       // exact hidden-box tests run
   std::int64_t boxes_culled = 0;       // boxes proved hidden
+  std::int64_t rays_cast = 0;          // method `sampled`: random rays cast from the cell
   VisibilityStats query;               // accumulated over the exact queries (exact_evaluations left at 0)
   double seconds = 0;                  // wall-clock time (for benchmarks; not written to JSON files)
 };

@@ -6,6 +6,7 @@
 #include "region/real_line_test.hpp"
 
 #include <algorithm>
+#include <functional>
 #include <random>
 #include <stdexcept>
 
@@ -20,13 +21,15 @@ struct Piece {
 
 class PairQuery {
  public:
-  PairQuery(const Scene& scene, const std::vector<std::int64_t>& candidates, std::int64_t target,
+  // occluders: the pair's shaft occluders; is_free: the exact re-check of a candidate witness segment
+  // against every occluder; stream: varies the random sequence per target.
+  PairQuery(std::vector<ShaftOccluder> occluders,
+            std::function<bool(const RationalPoint3&, const RationalPoint3&)> is_free, std::uint64_t stream,
             const StabbingPair& pair, const VisibilityOptions& options, VisibilityStats& stats)
-      : scene_(scene), candidates_(candidates), target_(target), pair_(pair), options_(options), stats_(stats),
-        rng_(options.seed * 0x9E3779B97F4A7C15ull + static_cast<std::uint64_t>(target)) {}
+      : is_free_(std::move(is_free)), pair_(pair), options_(options), stats_(stats),
+        rng_(options.seed * 0x9E3779B97F4A7C15ull + stream), occluders_(std::move(occluders)) {}
 
   std::optional<Witness> run() {
-    occluders_ = shaft_occluders(scene_, candidates_, target_, pair_);
     stats_.occluders_considered += static_cast<std::int64_t>(occluders_.size());
     if (auto w = sample()) {
       stats_.accepted_by_sampling = true;
@@ -120,7 +123,7 @@ class PairQuery {
       if (!cand) continue;
       // Free of every subtracted occluder by construction; re-check against all candidates, which also
       // covers the measure-zero blockers the CSG may ignore (docs/theory.md §5.4).
-      if (segment_is_free(scene_, candidates_, cand->p, cand->q, target_)) return Witness{cand->p, cand->q};
+      if (is_free_(cand->p, cand->q)) return Witness{cand->p, cand->q};
     }
     return std::nullopt;
   }
@@ -141,14 +144,12 @@ class PairQuery {
         }
       if (!free) continue;
       const RationalPoint3 pe = weighted_point(pair_.source, ws), qe = weighted_point(pair_.target, wt);
-      if (segment_is_free(scene_, candidates_, pe, qe, target_)) return Witness{pe, qe};
+      if (is_free_(pe, qe)) return Witness{pe, qe};
     }
     return std::nullopt;
   }
 
-  const Scene& scene_;
-  const std::vector<std::int64_t>& candidates_;
-  std::int64_t target_;
+  std::function<bool(const RationalPoint3&, const RationalPoint3&)> is_free_;
   const StabbingPair& pair_;
   const VisibilityOptions& options_;
   VisibilityStats& stats_;
@@ -162,7 +163,21 @@ class PairQuery {
 PairVisibility pair_visibility(const Scene& scene, const std::vector<std::int64_t>& candidates, std::int64_t target,
                                const StabbingPair& pair, const VisibilityOptions& options) {
   PairVisibility out;
-  PairQuery query(scene, candidates, target, pair, options, out.stats);
+  PairQuery query(
+      shaft_occluders(scene, candidates, target, pair),
+      [&](const RationalPoint3& p, const RationalPoint3& q) { return segment_is_free(scene, candidates, p, q, target); },
+      static_cast<std::uint64_t>(target), pair, options, out.stats);
+  out.witness = query.run();
+  return out;
+}
+
+PairVisibility pair_visibility(const std::vector<std::array<RationalPoint3, 3>>& occluders, std::uint64_t stream,
+                               const StabbingPair& pair, const VisibilityOptions& options) {
+  PairVisibility out;
+  PairQuery query(
+      shaft_occluders(occluders, pair),
+      [&](const RationalPoint3& p, const RationalPoint3& q) { return segment_is_free(occluders, p, q); }, stream,
+      pair, options, out.stats);
   out.witness = query.run();
   return out;
 }

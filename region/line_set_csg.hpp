@@ -10,6 +10,7 @@
 #include "region/visibility_options.hpp"
 #include "region/witness.hpp"
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <vector>
@@ -27,6 +28,12 @@ struct PairVisibility {
 // given seed. Cost: the samples, then the CSG (exponential in the number of effective occluders in the worst
 // case, docs/performance.md).
 PairVisibility pair_visibility(const Scene& scene, const std::vector<std::int64_t>& candidates, std::int64_t target,
+                               const StabbingPair& pair, const VisibilityOptions& options);
+
+// The same for occluders given as exact triangles (any rational corners, e.g. the exact boundaries of a
+// Quake 3 map's solids; every one of them is an occluder, none is skipped). `stream` varies the random
+// sequence (e.g. per target). Exact; deterministic for a given seed and stream.
+PairVisibility pair_visibility(const std::vector<std::array<RationalPoint3, 3>>& occluders, std::uint64_t stream,
                                const StabbingPair& pair, const VisibilityOptions& options);
 
 }  // namespace exactvis::region

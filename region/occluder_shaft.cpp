@@ -1,5 +1,7 @@
 #include "region/occluder_shaft.hpp"
 
+#include <optional>
+
 namespace exactvis::region {
 
 std::vector<Plane3> shaft_planes(const StabbingPair& pair) {
@@ -50,6 +52,20 @@ struct FilteredPlane {
   }
 };
 
+// The triangle clipped to the wedge between the pair's planes, with its edge functionals; std::nullopt when
+// the clipped part has no area off both planes (docs/theory.md §5.2).
+std::optional<ShaftOccluder> clipped_occluder(const std::array<RationalPoint3, 3>& tri, const StabbingPair& pair) {
+  Polygon3 clipped = clip_polygon({tri[0], tri[1], tri[2]}, pair.source_plane);
+  clipped = clip_polygon(clipped, pair.target_plane);
+  if (is_degenerate(clipped)) return std::nullopt;
+  if (lies_in_plane(clipped, pair.source_plane) || lies_in_plane(clipped, pair.target_plane)) return std::nullopt;
+  ShaftOccluder occ;
+  occ.corners = tri;
+  for (std::size_t i = 0; i < clipped.size(); ++i)
+    occ.edges.push_back(side_functional(line_through(clipped[i], clipped[(i + 1) % clipped.size()])));
+  return occ;
+}
+
 }  // namespace
 
 std::vector<ShaftOccluder> shaft_occluders(const Scene& scene, const std::vector<std::int64_t>& candidates,
@@ -70,18 +86,37 @@ std::vector<ShaftOccluder> shaft_occluders(const Scene& scene, const std::vector
       }
     }
     if (culled) continue;
-    const auto tri = triangle_points(scene, idx);
-    Polygon3 clipped = clip_polygon({tri[0], tri[1], tri[2]}, pair.source_plane);
-    clipped = clip_polygon(clipped, pair.target_plane);
-    if (is_degenerate(clipped)) continue;
-    if (lies_in_plane(clipped, pair.source_plane) || lies_in_plane(clipped, pair.target_plane)) continue;
-    ShaftOccluder occ;
-    occ.triangle = idx;
-    occ.corners = tri;
-    occ.corners_d = {scene.corner(st, 0), scene.corner(st, 1), scene.corner(st, 2)};
-    for (std::size_t i = 0; i < clipped.size(); ++i)
-      occ.edges.push_back(side_functional(line_through(clipped[i], clipped[(i + 1) % clipped.size()])));
-    out.push_back(std::move(occ));
+    if (auto occ = clipped_occluder(triangle_points(scene, idx), pair)) {
+      occ->triangle = idx;
+      occ->corners_d = {scene.corner(st, 0), scene.corner(st, 1), scene.corner(st, 2)};
+      out.push_back(std::move(*occ));
+    }
+  }
+  return out;
+}
+
+std::vector<ShaftOccluder> shaft_occluders(const std::vector<std::array<RationalPoint3, 3>>& triangles,
+                                           const StabbingPair& pair) {
+  const std::vector<Plane3> planes = shaft_planes(pair);
+  std::vector<ShaftOccluder> out;
+  for (std::size_t idx = 0; idx < triangles.size(); ++idx) {
+    const auto& tri = triangles[idx];
+    bool culled = false;
+    for (const auto& pl : planes)
+      if (plane_side(pl, tri[0]) != Sign::Positive && plane_side(pl, tri[1]) != Sign::Positive &&
+          plane_side(pl, tri[2]) != Sign::Positive) {
+        culled = true;  // as above: meets the shaft at most in a supporting plane
+        break;
+      }
+    if (culled) continue;
+    if (auto occ = clipped_occluder(tri, pair)) {
+      occ->triangle = static_cast<std::int64_t>(idx);
+      for (int k = 0; k < 3; ++k)
+        occ->corners_d[static_cast<std::size_t>(k)] = {CGAL::to_double(tri[static_cast<std::size_t>(k)].x),
+                                                       CGAL::to_double(tri[static_cast<std::size_t>(k)].y),
+                                                       CGAL::to_double(tri[static_cast<std::size_t>(k)].z)};
+      out.push_back(std::move(*occ));
+    }
   }
   return out;
 }

@@ -13,7 +13,7 @@
 namespace exactvis::region {
 
 struct ShaftOccluder {
-  std::int64_t triangle = -1;  // index into Scene::triangles
+  std::int64_t triangle = -1;  // index into Scene::triangles (or into the exact triangle list)
   std::array<RationalPoint3, 3> corners;
   std::array<Point3, 3> corners_d;  // the same corners as input doubles
   std::vector<IntVec6> edges;  // functionals of the clipped polygon's edges, in loop order
@@ -30,5 +30,11 @@ std::vector<Plane3> shaft_planes(const StabbingPair& pair);
 // Exact (a filtered side test per corner and plane).
 std::vector<ShaftOccluder> shaft_occluders(const Scene& scene, const std::vector<std::int64_t>& candidates,
                                            std::int64_t target, const StabbingPair& pair);
+
+// The same culling and clipping for occluders given as exact triangles (any rational corners; every one of
+// them is an occluder); ShaftOccluder::triangle is then the index into `triangles` and corners_d the corners
+// rounded to doubles (they only order the CSG through sampling). Exact.
+std::vector<ShaftOccluder> shaft_occluders(const std::vector<std::array<RationalPoint3, 3>>& triangles,
+                                           const StabbingPair& pair);
 
 }  // namespace exactvis::region

@@ -1,18 +1,20 @@
 #include "region/pvs_method.hpp"
 
 #include "region/exact_pvs.hpp"
+#include "region/sampled_pvs.hpp"
 
 #include <stdexcept>
 
 namespace exactvis::region {
 
 const std::vector<std::string>& pvs_method_names() {
-  static const std::vector<std::string> names{"exact"};
+  static const std::vector<std::string> names{"exact", "sampled"};
   return names;
 }
 
 PvsMethod parse_pvs_method(const std::string& name) {
   if (name == "exact") return PvsMethod::exact;
+  if (name == "sampled") return PvsMethod::sampled;
   std::string known;
   for (const auto& n : pvs_method_names()) known += (known.empty() ? "" : ", ") + n;
   throw std::invalid_argument("unknown PVS method '" + name + "' (known: " + known + ")");
@@ -21,6 +23,7 @@ PvsMethod parse_pvs_method(const std::string& name) {
 std::string pvs_method_name(PvsMethod method) {
   switch (method) {
     case PvsMethod::exact: return "exact";
+    case PvsMethod::sampled: return "sampled";
   }
   return "?";
 }
@@ -29,6 +32,7 @@ CellPvs compute_cell_pvs(PvsMethod method, const PvsContext& context, const Rati
                          const PvsOptions& options) {
   switch (method) {
     case PvsMethod::exact: return exact_cell_pvs(context, cell, options);
+    case PvsMethod::sampled: return sampled_cell_pvs(context, cell, options);
   }
   throw std::logic_error("compute_cell_pvs: unhandled method");
 }

@@ -9,10 +9,11 @@
 namespace exactvis::region {
 
 enum class PvsMethod {
-  exact,  // region/exact_pvs.hpp: every triangle decided exactly, witnesses checked exactly
+  exact,    // region/exact_pvs.hpp: every triangle decided exactly, witnesses checked exactly
+  sampled,  // region/sampled_pvs.hpp: random rays per cell, each hit confirmed exactly (aggressive)
 };
 
-// The method names --method accepts, in order ("exact").
+// The method names --method accepts, in order ("exact", "sampled").
 const std::vector<std::string>& pvs_method_names();
 // The method called `name`; throws std::invalid_argument ("unknown PVS method 'NAME' (known: ...)").
 PvsMethod parse_pvs_method(const std::string& name);

@@ -108,6 +108,13 @@ bool segment_is_free(const Scene& scene, const std::vector<std::int64_t>& candid
   return true;
 }
 
+bool segment_is_free(const std::vector<std::array<RationalPoint3, 3>>& occluders, const RationalPoint3& p,
+                     const RationalPoint3& q) {
+  for (const auto& t : occluders)
+    if (open_segment_meets_closed_triangle(p, q, t[0], t[1], t[2])) return false;
+  return true;
+}
+
 std::optional<Witness> witness_inside_cell(const Scene& scene, const std::vector<std::int64_t>& cands,
                                            const Polygon3& t_in, const std::array<RationalPoint3, 3>& tri,
                                            const RationalBox3& cell, std::int64_t target, std::uint64_t seed) {

@@ -27,6 +27,10 @@ struct Witness {
 bool segment_is_free(const Scene& scene, const std::vector<std::int64_t>& candidates, const RationalPoint3& p,
                      const RationalPoint3& q, std::int64_t skip);
 
+// True iff the open segment (p, q) meets none of the closed triangles (exact).
+bool segment_is_free(const std::vector<std::array<RationalPoint3, 3>>& occluders, const RationalPoint3& p,
+                     const RationalPoint3& q);
+
 // The witness rounded to the nearest doubles, if that is still a valid witness (exact re-check: p on the
 // source per `on_source`, q in relint T, open segment free); std::nullopt otherwise.
 std::optional<Witness> round_witness(const Scene& scene, const CandidateFinder& candidates,

@@ -303,6 +303,45 @@ inline DoorwayMap doorway_map() {
   return m;
 }
 
+// The tunnels map (exact cluster visibility with known answers): world box [0, 384] x [0, 128] x [0, 128];
+// room A (x <= 100, cluster 0), a tunnel D1 (100 <= x <= 200, y <= 16, cluster 1) in a solid slab, room B
+// (200 <= x <= 220, cluster 2), a tunnel D2 (220 <= x <= 320, y >= 112, cluster 3) in a second solid slab,
+// room C (x >= 320, cluster 4). A segment through a whole tunnel rises less than 16 over 100 in y, so it
+// cannot pass both tunnels' ends (a rise of 96 over the 20 of room B): hidden pairs (0, 3), (0, 4), (1, 4) and
+// their reverses; every other pair is visible (e.g. D1 -> D2 steeply from D1's exit corner).
+// Leaves: 0 unused (cluster 0), 1 A, 2 solid slab 1 (y >= 16), 3 D1, 4 B, 5 C, 6 D2, 7 solid slab 2.
+// Visdata: `visible` of the caller (default: the exact answer).
+struct TunnelsMap {
+  Bsp bsp;
+  static bool exact(int a, int b) {
+    auto hidden = [](int x, int y) { return (x == 0 && y == 3) || (x == 0 && y == 4) || (x == 1 && y == 4); };
+    return !hidden(a, b) && !hidden(b, a);
+  }
+};
+
+template <class F>
+inline TunnelsMap tunnels_map(F visible) {
+  TunnelsMap m;
+  Bsp& b = m.bsp;
+  b.shaders = {{"textures/base/wall", 0, 1}};
+  const int x100 = b.add_plane(1, 0, 0, 100), x200 = b.add_plane(1, 0, 0, 200);
+  const int x220 = b.add_plane(1, 0, 0, 220), x320 = b.add_plane(1, 0, 0, 320);
+  const int y16 = b.add_plane(0, 1, 0, 16), y112 = b.add_plane(0, 1, 0, 112);
+  b.nodes = {{x100, 1, -(1 + 1)},          // 0: x > 100 -> node 1, else A
+             {x200, 2, 3},                 // 1: x > 200 -> node 2, else the first slab
+             {x220, 4, -(4 + 1)},          // 2: x > 220 -> node 4, else B
+             {y16, -(2 + 1), -(3 + 1)},    // 3: y > 16 -> solid, else D1
+             {x320, -(5 + 1), 5},          // 4: x > 320 -> C, else the second slab
+             {y112, -(6 + 1), -(7 + 1)}};  // 5: y > 112 -> D2, else solid
+  b.leaves.resize(8);
+  const int cluster[8] = {0, 0, -1, 1, 2, 4, 3, -1};
+  for (int i = 0; i < 8; ++i) b.leaves[i].cluster = cluster[i];
+  b.models = {{{0, 0, 0}, {384, 128, 128}, 0, 0, 0, 0}};
+  b.set_vis(5, 1, visible);
+  return m;
+}
+inline TunnelsMap tunnels_map() { return tunnels_map(TunnelsMap::exact); }
+
 // ---- Independent exact point location (oracle): descend the writer's own tree with GMP rationals. ----
 // Returns the leaf, or nullopt when x lies exactly on a plane met on the way (the tests skip such points).
 inline std::optional<int> oracle_leaf_of(const Bsp& b, const std::array<mpq_class, 3>& x) {
