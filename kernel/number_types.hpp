@@ -2,8 +2,8 @@
 // Number types of the exact kernel.
 //
 // Input coordinates are doubles and are read as the exact rationals they denote. Predicates are evaluated
-// first with interval arithmetic (the filter) and, only when the interval contains zero, again with exact
-// rationals (GMP through CGAL). See docs/theory.md, "Arithmetic".
+// by filtered_sign: a semi-static filter in doubles, then interval arithmetic, and only when neither can
+// prove the sign, exact rationals (GMP through CGAL). See docs/theory.md, "Arithmetic".
 #include <CGAL/Gmpq.h>
 #include <CGAL/Gmpz.h>
 #include <CGAL/Interval_nt.h>
