@@ -28,16 +28,23 @@ class BoundedDouble {
   BoundedDouble() noexcept : BoundedDouble(0.0) {}
   // An exact double (k = 0: no error).
   BoundedDouble(double x) noexcept : v_(x), m_(std::fabs(x)), k_(0) {}  // NOLINT: implicit, like a double
-  // A value known only by an enclosure [lo, hi] (a point interval is exact). Narrow enclosures of one sign
-  // away from the subnormal range, hi - lo <= ~9u |lo| (those of enclosing_interval and CGAL::to_interval
-  // are 1-2 ulps wide), get k = 10; any other enclosure gives a value that certifies nothing.
+  // A value known only by an enclosure [lo, hi] (a point interval is exact): v = lo, k = 10 and a magnitude
+  // large enough to cover the width (2^50 (hi - lo) at least), so a narrow enclosure (those of
+  // enclosing_interval and CGAL::to_interval are 1-2 ulps wide) costs little and a wide one certifies
+  // only values far from 0.
   BoundedDouble(const Interval& i) noexcept : BoundedDouble(i.inf(), i.sup()) {}  // NOLINT
   BoundedDouble(const std::pair<double, double>& e) noexcept : BoundedDouble(e.first, e.second) {}  // NOLINT
 
+  // Two exact operands that cancel exactly (equal coordinates: axis-parallel and shared-vertex
+  // configurations) give an exact 0 (magnitude 0), so that products with it are exact zeros too.
   friend BoundedDouble operator+(const BoundedDouble& a, const BoundedDouble& b) noexcept {
+    if (((a.k_ | b.k_) == 0) && a.v_ == -b.v_) [[unlikely]]
+      return {0.0, 0.0, 0};
     return {a.v_ + b.v_, a.m_ + b.m_, std::max(a.k_, b.k_) + 1};
   }
   friend BoundedDouble operator-(const BoundedDouble& a, const BoundedDouble& b) noexcept {
+    if (((a.k_ | b.k_) == 0) && a.v_ == b.v_) [[unlikely]]
+      return {0.0, 0.0, 0};
     return {a.v_ - b.v_, a.m_ + b.m_, std::max(a.k_, b.k_) + 1};
   }
   friend BoundedDouble operator-(const BoundedDouble& a) noexcept { return {-a.v_, a.m_, a.k_}; }
@@ -45,7 +52,7 @@ class BoundedDouble {
     const double m = a.m_ * b.m_;
     // The relative rounding model needs the product of the magnitudes in the normal range; an exact zero
     // factor (m == 0 means the value is exactly 0) gives an exact zero product.
-    const bool modelled = m > std::numeric_limits<double>::min() || a.m_ == 0 || b.m_ == 0;
+    const bool modelled = (m > std::numeric_limits<double>::min()) | (a.m_ == 0) | (b.m_ == 0);
     return {a.v_ * b.v_, modelled ? m : std::numeric_limits<double>::infinity(), a.k_ + b.k_ + 1};
   }
   BoundedDouble& operator+=(const BoundedDouble& b) noexcept { return *this = *this + b; }
@@ -71,17 +78,16 @@ class BoundedDouble {
  private:
   static constexpr int kMaxIndex = 1 << 20;
   static constexpr double kPerIndex = 0x1p-53 + 0x1p-83;  // u (1 + 2^-30): k * kPerIndex * (1 - u) >= g(k)
-  static constexpr int kEnclosureIndex = 10;              // an enclosure of relative width <= 9.001 u
+  static constexpr int kEnclosureIndex = 10;              // a non-point enclosure
 
   BoundedDouble(double v, double m, int k) noexcept : v_(v), m_(m), k_(k) {}
+  // |x - lo| <= hi - lo <= fl(hi - lo) / (1 - u) <= 8u (1 + 2u) m <= g(10) m when m >= fl(hi - lo) 2^50
+  // (exact scaling; an overflow makes m infinite: such wide enclosures certify nothing).
   BoundedDouble(double lo, double hi) noexcept : v_(lo), m_(std::fabs(lo)), k_(0) {
-    if (lo == hi) return;
+    if (lo == hi) [[likely]]
+      return;
+    m_ = std::max(std::max(m_, std::fabs(hi)), (hi - lo) * 0x1p50);
     k_ = kEnclosureIndex;
-    // hi <= fl(lo + lo 2^-50) gives hi - lo <= lo (2^-50 + u (1 + 2^-50)) <= 9.001 u lo <= g(10) hi; the
-    // scaling by 2^-50 is exact for |lo| >= 2^-969 (no underflow).
-    if (lo >= 0x1p-969 && hi <= lo + lo * 0x1p-50) m_ = hi;
-    else if (hi <= -0x1p-969 && lo >= hi + hi * 0x1p-50) m_ = -lo;
-    else m_ = std::numeric_limits<double>::infinity();
   }
 
   double v_;  // computed value

@@ -17,6 +17,7 @@
 #include "kernel/bounded_double.hpp"
 #include "kernel/number_types.hpp"
 #include "kernel/predicate_counters.hpp"
+#include "kernel/semi_static_filters.hpp"
 
 #include <atomic>
 #include <optional>

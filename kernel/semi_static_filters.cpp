@@ -14,15 +14,16 @@ double scaled(double x, int e) { return std::ldexp(x, -e); }
 
 }  // namespace
 
-std::optional<Sign> orient2d_cold(double ax, double ay, double bx, double by, double cx, double cy) noexcept {
-  const double ux = bx - ax, uy = by - ay, vx = cx - ax, vy = cy - ay;
+std::optional<Sign> cross2d_cold(double u0x, double u0y, double u1x, double u1y, double v0x, double v0y,
+                                 double v1x, double v1y) noexcept {
+  const double ux = u1x - u0x, uy = u1y - u0y, vx = v1x - v0x, vy = v1y - v0y;
   const double mx = std::max(std::fabs(ux), std::fabs(vx)), my = std::max(std::fabs(uy), std::fabs(vy));
   if (mx == 0 || my == 0) return Sign::Zero;  // a zero column: all x (or all y) differences are exactly 0
   if (!std::isfinite(mx) || !std::isfinite(my)) return std::nullopt;  // an overflowed difference
   // Integer inputs below 2^51: the differences are exact integers; with mx my < 2^51 both products and
   // their difference are exact too.
-  if (mx * my < 0x1p51 && is_integer(ax) && is_integer(ay) && is_integer(bx) && is_integer(by) &&
-      is_integer(cx) && is_integer(cy))
+  if (mx * my < 0x1p51 && is_integer(u0x) && is_integer(u0y) && is_integer(u1x) && is_integer(u1y) &&
+      is_integer(v0x) && is_integer(v0y) && is_integer(v1x) && is_integer(v1y))
     return sign_of_double(ux * vy - uy * vx);
   if (in_range(mx, kOrient2dMin, kOrient2dMax) && in_range(my, kOrient2dMin, kOrient2dMax)) return std::nullopt;
   // Rescale each column so that its maximum lies in [1, 2): the determinant is multiplied by 2^-(ex + ey).

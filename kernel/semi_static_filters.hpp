@@ -27,7 +27,8 @@ inline constexpr double kOrient3dBound = 0x3p-49 + 0x3p-89;  // 48u (1 + 2^-40)
 inline constexpr double kOrient3dMin = 0x1p-300, kOrient3dMax = 0x1p+300;
 
 // The cold paths (exact small integers, rescaled columns), on the same inputs as the fast paths below.
-std::optional<Sign> orient2d_cold(double ax, double ay, double bx, double by, double cx, double cy) noexcept;
+std::optional<Sign> cross2d_cold(double u0x, double u0y, double u1x, double u1y, double v0x, double v0y,
+                                 double v1x, double v1y) noexcept;
 std::optional<Sign> orient3d_cold(const Point3& a, const Point3& b, const Point3& c, const Point3& d) noexcept;
 
 // sign(det) when |det| > bound, else nullopt.
@@ -48,17 +49,30 @@ inline double column_max(const double (&m)[3][3], int j) noexcept {
 }
 }  // namespace semi_static
 
-// Sign of (bx - ax)(cy - ay) - (by - ay)(cx - ax), if certified.
-inline std::optional<Sign> orient2d_semi_static(double ax, double ay, double bx, double by, double cx,
-                                                double cy) noexcept {
+// Sign of cross(u1 - u0, v1 - v0) = (u1x - u0x)(v1y - v0y) - (u1y - u0y)(v1x - v0x), if certified (the
+// same error analysis as orient2d, of which it is the general form).
+inline std::optional<Sign> cross2d_semi_static(double u0x, double u0y, double u1x, double u1y, double v0x,
+                                               double v0y, double v1x, double v1y) noexcept {
   using namespace semi_static;
-  const double ux = bx - ax, uy = by - ay, vx = cx - ax, vy = cy - ay;
+  const double ux = u1x - u0x, uy = u1y - u0y, vx = v1x - v0x, vy = v1y - v0y;
   const double det = ux * vy - uy * vx;
   const double mx = std::max(std::fabs(ux), std::fabs(vx)), my = std::max(std::fabs(uy), std::fabs(vy));
   if (std::min(mx, my) >= kOrient2dMin && std::max(mx, my) <= kOrient2dMax) [[likely]] {
     if (const auto s = certified(det, kOrient2dBound * mx * my)) return s;
   }
-  return orient2d_cold(ax, ay, bx, by, cx, cy);
+  return cross2d_cold(u0x, u0y, u1x, u1y, v0x, v0y, v1x, v1y);
+}
+
+// Sign of (bx - ax)(cy - ay) - (by - ay)(cx - ax) (orient2d), if certified.
+inline std::optional<Sign> orient2d_semi_static(double ax, double ay, double bx, double by, double cx,
+                                                double cy) noexcept {
+  return cross2d_semi_static(ax, ay, bx, by, ax, ay, cx, cy);
+}
+
+// Sign of b - a for doubles: always exact (a difference of doubles rounds to 0 only if it is 0, and
+// rounding never changes a sign).
+inline Sign difference_sign(double a, double b) noexcept {
+  return b > a ? Sign::Positive : (b < a ? Sign::Negative : Sign::Zero);
 }
 
 // Sign of det[b - a, c - a, d - a] (orient3d), if certified.

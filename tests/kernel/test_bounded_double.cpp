@@ -155,12 +155,18 @@ TEST(BoundedDouble, ExactZerosAndEnclosures) {
   // m == 0: an exact zero, whatever the operations.
   const BoundedDouble z = (BoundedDouble(0.0) - 0.0) * 1e300 + BoundedDouble(5.0) * 0.0;
   EXPECT_EQ(z.certified_sign(), Sign::Zero);
-  // A zero by cancellation is not certified by layer 1 (its magnitude is not 0).
-  EXPECT_FALSE(((BoundedDouble(3.0) - 3.0) * 1e300).certified_sign().has_value());
-  // A point interval is an exact double; wide or zero-crossing enclosures certify nothing.
+  // Exact operands that cancel exactly give an exact zero; a zero of rounded values is not certified
+  // (0.1 + 0.2 rounds to the double next to 0.3, but the exact sum is not that double).
+  EXPECT_EQ(((BoundedDouble(3.0) - 3.0) * 1e300 + (BoundedDouble(-2.5) + 2.5)).certified_sign(), Sign::Zero);
+  EXPECT_EQ((BoundedDouble(0.1) + 0.2).value(), 0.30000000000000004);
+  EXPECT_FALSE(((BoundedDouble(0.1) + 0.2) - 0.30000000000000004).certified_sign().has_value());
+  // A point interval is an exact double; a wide or zero-crossing enclosure certifies only what its width
+  // allows (its magnitude covers 2^50 times the width).
   EXPECT_EQ((BoundedDouble(Interval(2)) - 1.0).certified_sign(), Sign::Positive);
   EXPECT_FALSE((BoundedDouble(Interval(1, 2)) - 0.5).certified_sign().has_value());
-  EXPECT_FALSE((BoundedDouble(Interval(-1e-300, 1e-300)) + 1.0).certified_sign().has_value());
+  EXPECT_EQ((BoundedDouble(Interval(1, 2)) - 1e16).certified_sign(), Sign::Negative);
+  EXPECT_FALSE(BoundedDouble(Interval(-1e-300, 1e-300)).certified_sign().has_value());
+  EXPECT_EQ((BoundedDouble(Interval(-1e-300, 1e-300)) + 1.0).certified_sign(), Sign::Positive);
   // A narrow enclosure of 1/3 certifies 1/3 - 0.3 > 0, but not the sign of 1/3 - fl(1/3) (below its width).
   const Exact third(1, 3);
   EXPECT_EQ((BoundedDouble(enclosing_interval(third)) - 0.3).certified_sign(), Sign::Positive);

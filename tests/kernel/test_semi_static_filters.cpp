@@ -200,6 +200,36 @@ TEST(SemiStaticFilters, Orient2dIsExactWheneverItDecides) {
   }
 }
 
+TEST(SemiStaticFilters, Cross2dIsExactWheneverItDecides) {
+  // The general form cross(u1 - u0, v1 - v0): independent start points, parallel and nearly parallel
+  // vectors, shared points, integers, all scales.
+  Rng r(103);
+  int decided = 0;
+  const int n = 30000;
+  for (int i = 0; i < n; ++i) {
+    double p[8];
+    const double s = r.scale(-1000, 1000);
+    for (double& x : p) x = r.integer(0, 4) == 0 ? double(r.integer(-6, 6)) : r.uniform() * s;
+    switch (r.integer(0, 3)) {
+      case 0: p[4] = p[0], p[5] = p[1]; break;                    // v0 = u0
+      case 1: p[6] = p[4] + (p[2] - p[0]), p[7] = p[5] + (p[3] - p[1]); break;  // parallel (rounded)
+      case 2: p[6] = p[2], p[7] = p[3]; break;                    // v1 = u1
+      default: break;
+    }
+    const auto got = cross2d_semi_static(p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7]);
+    if (!got) continue;
+    ++decided;
+    const mpq_class ux = mpq_class(p[2]) - p[0], uy = mpq_class(p[3]) - p[1];
+    const mpq_class vx = mpq_class(p[6]) - p[4], vy = mpq_class(p[7]) - p[5];
+    ASSERT_EQ(to_int(*got), oracle::sign(ux * vy - uy * vx)) << "case " << i;
+  }
+  EXPECT_GT(decided, n * 3 / 4);
+  EXPECT_EQ(difference_sign(0.1, 0.1), Sign::Zero);
+  EXPECT_EQ(difference_sign(1e-320, 2e-320), Sign::Positive);
+  EXPECT_EQ(difference_sign(-1e308, 1e308), Sign::Positive);  // overflowing difference: sign still right
+  EXPECT_EQ(difference_sign(1.0, std::nextafter(1.0, 0.0)), Sign::Negative);
+}
+
 TEST(SemiStaticFilters, DecidesZeroColumnsAndOverflowedDifferencesSafely) {
   // A zero column makes the determinant exactly 0 whatever the other entries.
   EXPECT_EQ(orient3d_semi_static({1, 2, 0}, {1e300, -3, 0}, {-1e-300, 5, 0}, {7, 1e-320, 0}), Sign::Zero);
