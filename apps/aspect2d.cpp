@@ -1,14 +1,19 @@
-// `exactvis aspect2d SCENE2D [--slice z=V] [--json] [--svg out.svg] [--vtp out.vtp] [--margin R]`: the
+// `exactvis aspect2d SCENE2D [--slice z=V] [--json] [--svg out.svg] [--vtp out.vtp] [--margin R] [-q]`: the
 // aspect graph of a planar scene: viewpoint regions of equal visible-edge sets (docs/cli.md).
+#include "apps/cli_util.hpp"
 #include "apps/command_registry.hpp"
 #include "aspect/aspect_graph_2d.hpp"
+#include "io/atomic_file.hpp"
+#include "io/load_scene.hpp"
 #include "io/scene2d_json.hpp"
 #include "io/svg_2d.hpp"
 #include "io/vtp_2d.hpp"
 
 #include <nlohmann/json.hpp>
 
+#include <cmath>
 #include <iostream>
+#include <sstream>
 #include <stdexcept>
 
 namespace {
@@ -17,26 +22,44 @@ using namespace exactvis;
 
 struct Aspect2DOptions {
   std::string scene, slice, svg, vtp;
-  bool json = false;
+  bool json = false, quiet = false;
   double margin = 0.25;
 };
 
 using ojson = nlohmann::ordered_json;  // keeps the documented key order ("counts" first)
 
-// An exact value: a JSON number when it is exactly a double, else the string "num/den".
-ojson exact_json(const Exact& x) {
-  double d = 0;
-  if (exact_double(x, &d)) return d;
-  return to_rational_string(x);
-}
-ojson point_json(const Point2& p) { return ojson::array({exact_json(p.x), exact_json(p.y)}); }
+using app::exact_json;  // exact values: a JSON number when exactly a double, else "num/den"
+using app::point_json;
 
-void progress(double f) {
-  static int last = -1;
-  const int pct = static_cast<int>(f * 100);
-  if (pct == last) return;
-  last = pct;
-  std::cerr << "\raspect2d: " << pct << "%" << (pct == 100 ? "\n" : "") << std::flush;
+// Above this many scene vertices aspect2d warns about its cost before it starts (docs/cli.md).
+constexpr int kLargeScene = 200;
+// Once the arrangement is built, it warns when the face stage is estimated to take longer than this.
+constexpr double kLongFaceStageSeconds = 60;
+// Cost of the face stage: one visibility sweep per face, about 4 microseconds per face and scene vertex on
+// the benchmark machine (docs/performance.md: 2.7 on a 1000-vertex polygon, 4.4 on the 96-vertex grid).
+constexpr double kSecondsPerFaceVertex = 4e-6;
+
+// The first warning: the worst-case growth, scaled from the benchmark grids (docs/performance.md: 215 s and
+// 0.73 GB at 216 vertices).
+std::string size_warning(int n) {
+  const double f = std::pow(n / 216.0, 4);
+  std::ostringstream w;
+  w.precision(2);
+  w << "aspect2d: warning: " << n << " vertices (more than " << kLargeScene
+    << "): the aspect graph costs up to O(n^4) time and memory; the benchmark grids' 215 s and 0.73 GB at 216 "
+       "vertices (docs/performance.md) scale to roughly "
+    << 215 * f << " s and " << 0.73 * f << " GB here";
+  return w.str();
+}
+
+// The second warning: the face stage's estimated time, from the number of faces.
+std::string faces_warning(std::size_t faces, int n, double seconds) {
+  std::ostringstream w;
+  w.precision(2);
+  w << "aspect2d: warning: " << faces << " arrangement faces, one visibility sweep each over " << n
+    << " vertices: roughly " << seconds << " s more (about " << kSecondsPerFaceVertex * 1e6
+    << " us per face and vertex, docs/performance.md)";
+  return w.str();
 }
 
 std::vector<std::array<double, 2>> approx(const std::vector<Point2>& r) {
@@ -46,9 +69,19 @@ std::vector<std::array<double, 2>> approx(const std::vector<Point2>& r) {
 }
 
 int run(const Aspect2DOptions& o) {
-  if (!(o.margin >= 0)) throw std::invalid_argument("--margin must be >= 0");
+  if (!(o.margin >= 0) || !std::isfinite(o.margin)) throw std::invalid_argument("--margin must be a finite number >= 0");
+  OutputFiles outputs({o.svg, o.vtp});  // fails now, not after the work, when an output cannot be created
   const Scene2D scene = load_scene2d(o.scene, o.slice);
-  const AspectGraph2D g = aspect_graph(scene, o.margin, scene.num_vertices() > 40 ? progress : nullptr);
+  if (!frame_box(scene, o.margin).representable)
+    throw InputError(o.scene + ": the viewpoint frame (the scene's box widened by --margin times its size) would "
+                     "reach beyond the largest double (1.8e308); use a smaller --margin");
+  const int n = scene.num_vertices();
+  if (n > kLargeScene && !o.quiet) std::cerr << size_warning(n) << std::endl;
+  const auto warn_faces = [&](std::size_t faces) {
+    const double seconds = kSecondsPerFaceVertex * static_cast<double>(faces) * n;
+    if (seconds > kLongFaceStageSeconds && !o.quiet) std::cerr << faces_warning(faces, n, seconds) << std::endl;
+  };
+  const AspectGraph2D g = aspect_graph(scene, o.margin, app::progress_wanted(o.quiet), warn_faces);
   if (o.json) {
     ojson j;
     j["counts"] = {{"regions", g.regions.size()}, {"adjacencies", g.adjacency.size()},
@@ -90,7 +123,7 @@ int run(const Aspect2DOptions& o) {
     }
     for (const auto& b : g.boundaries) svg_segment(doc, {b[0].ax, b[0].ay}, {b[1].ax, b[1].ay}, "#404040", 0.4);
     svg_scene(doc, g.framed);
-    svg_write(doc, o.svg);
+    outputs.write(o.svg, [&](const std::string& temp) { return svg_write(doc, temp), true; });
   }
   if (!o.vtp.empty()) {
     VtpCells2D cells;
@@ -104,8 +137,9 @@ int run(const Aspect2DOptions& o) {
       cells.lines.push_back({{{b[0].ax, b[0].ay}, {b[1].ax, b[1].ay}}});
       cells.line_values.push_back(-1);
     }
-    write_vtp_2d(o.vtp, cells);
+    outputs.write(o.vtp, [&](const std::string& temp) { return write_vtp_2d(temp, cells), true; });
   }
+  outputs.commit();  // all output files appear together, or none
   return 0;
 }
 
@@ -119,6 +153,7 @@ const exactvis::app::CommandRegistration registration(
       sub->add_option("--svg", opts->svg, "write a picture: regions coloured by aspect");
       sub->add_option("--vtp", opts->vtp, "write regions (cell value = region) as VTK PolyData");
       sub->add_option("--margin", opts->margin, "viewpoint frame margin, relative to the scene size (default 0.25)");
+      sub->add_flag("-q,--quiet", opts->quiet, "no progress bars and no cost warning on stderr");
       return [opts] { return run(*opts); };
     });
 

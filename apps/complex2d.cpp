@@ -1,6 +1,8 @@
 // `exactvis complex2d SCENE2D [--slice z=V] [--json] [--svg out.svg] [--vtp out.vtp]`: the 2D visibility
 // complex (free bitangents, edges, faces) of a planar scene (docs/cli.md).
+#include "apps/cli_util.hpp"
 #include "apps/command_registry.hpp"
+#include "io/atomic_file.hpp"
 #include "io/scene2d_json.hpp"
 #include "io/svg_2d.hpp"
 #include "io/vtp_2d.hpp"
@@ -19,28 +21,17 @@ struct Complex2DOptions {
   bool json = false;
 };
 
-void progress(double f) {
-  static int last = -1;
-  const int pct = static_cast<int>(f * 100);
-  if (pct == last) return;
-  last = pct;
-  std::cerr << "\rcomplex2d: sweeps " << pct << "%" << (pct == 100 ? "\n" : "") << std::flush;
-}
-
 using ojson = nlohmann::ordered_json;  // keeps the documented key order ("counts" first)
 
-// An exact value: a JSON number when it is exactly a double, else the string "num/den".
-ojson exact_json(const Exact& x) {
-  double d = 0;
-  if (exact_double(x, &d)) return d;
-  return to_rational_string(x);
-}
-ojson point_json(const Point2& p) { return ojson::array({exact_json(p.x), exact_json(p.y)}); }
+using app::exact_json;  // exact values: a JSON number when exactly a double, else "num/den"
+using app::point_json;
 ojson end_json(const SegmentEnd2D& e) { return e.kind == SegmentEnd2D::Infinity ? ojson() : point_json(e.point); }
 
 int run(const Complex2DOptions& o) {
+  OutputFiles outputs({o.svg, o.vtp});  // fails now, not after the work, when an output cannot be created
   const Scene2D scene = load_scene2d(o.scene, o.slice);
-  const VisibilityComplex2D cx = visibility_complex(scene, scene.num_vertices() > 2000 ? progress : nullptr);
+  const app::FractionProgress progress("complex2d: sweeps", scene.num_vertices() > 2000 && app::progress_wanted(false));
+  const VisibilityComplex2D cx = visibility_complex(scene, progress.callback());
   const auto& B = cx.graph.bitangents;
   if (o.json) {
     ojson j;
@@ -98,7 +89,7 @@ int run(const Complex2DOptions& o) {
       svg_segment(doc, {pb.ax, pb.ay}, end_or_far(b.end_b, pa, pb, far), colour, 0.6, true);
       svg_segment(doc, {pa.ax, pa.ay}, {pb.ax, pb.ay}, colour, 1.5);
     }
-    svg_write(doc, o.svg);
+    outputs.write(o.svg, [&](const std::string& temp) { return svg_write(doc, temp), true; });
   }
   if (!o.vtp.empty()) {
     VtpCells2D cells;
@@ -116,8 +107,9 @@ int run(const Complex2DOptions& o) {
       cells.lines.push_back({{{scene.points[b.a].ax, scene.points[b.a].ay}, {scene.points[b.b].ax, scene.points[b.b].ay}}});
       cells.line_values.push_back(2 * (b.side_a == 'R') + (b.side_b == 'R'));
     }
-    write_vtp_2d(o.vtp, cells);
+    outputs.write(o.vtp, [&](const std::string& temp) { return write_vtp_2d(temp, cells), true; });
   }
+  outputs.commit();  // all output files appear together, or none
   return 0;
 }
 

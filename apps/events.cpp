@@ -1,5 +1,6 @@
 // `exactvis events SCENE... [--light SPEC] [--kinds EV,EEE] [--json] [--vtp FILE]`: EV and EEE visual events
 // with occlusion (docs/cli.md "events", definitions in docs/theory.md section 6).
+#include "apps/cli_util.hpp"
 #include "apps/command_registry.hpp"
 #include "events/eee_enumeration.hpp"
 #include "events/ev_events.hpp"
@@ -13,7 +14,6 @@
 #include <iostream>
 #include <sstream>
 #include <stdexcept>
-#include <unistd.h>
 
 namespace {
 
@@ -48,11 +48,11 @@ int run_events(const EventsOptions& o) {
   exactvis::EeeOptions eee_opt;
   exactvis::LightSource light;
   if (!o.light.empty()) {
-    light = exactvis::select_light(scene, o.light);
+    light = exactvis::app::parse_light(scene, o.light);
     opt.light_triangles = light.triangles;
     eee_opt.light_triangles = light.triangles;
   }
-  opt.progress = eee_opt.progress = !o.no_progress && isatty(STDERR_FILENO);
+  opt.progress = eee_opt.progress = exactvis::app::progress_wanted(o.no_progress);
   opt.split_at_end_objects = !o.no_split;
   exactvis::EvResult r;
   exactvis::EeeResult eee;
@@ -102,14 +102,14 @@ int run_events(const EventsOptions& o) {
     for (std::size_t k = 0; k < ev.intervals.size();) {
       std::size_t last = k;
       while (last + 1 < ev.intervals.size() &&
-             ev.intervals[last].end1.cause == exactvis::EventEnd::Cause::EndObjectChange &&
+             ev.intervals[last].end1.cause == exactvis::CriticalEnd::Cause::EndObjectChange &&
              ev.intervals[last].t1 == ev.intervals[last + 1].t0)
         ++last;
-      std::cout << " [" << exactvis::to_rational_string(ev.intervals[k].t0) << ", "
-                << exactvis::to_rational_string(ev.intervals[last].t1) << "]";
+      std::cout << " [" << exactvis::root_number_to_string(ev.intervals[k].t0) << ", "
+                << exactvis::root_number_to_string(ev.intervals[last].t1) << "]";
       if (last > k) {
         std::cout << " (end objects change at";
-        for (std::size_t c = k; c < last; ++c) std::cout << " " << exactvis::to_rational_string(ev.intervals[c].t1);
+        for (std::size_t c = k; c < last; ++c) std::cout << " " << exactvis::root_number_to_string(ev.intervals[c].t1);
         std::cout << ")";
       }
       k = last + 1;

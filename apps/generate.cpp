@@ -1,4 +1,5 @@
 // `exactvis generate KIND --triangles N --seed S -o FILE`: a deterministic test scene.
+#include "apps/cli_util.hpp"
 #include "apps/command_registry.hpp"
 #include "io/write_mesh.hpp"
 #include "kernel/scene_generators.hpp"
@@ -10,12 +11,12 @@ namespace {
 struct GenerateOptions {
   std::string kind;
   std::int64_t triangles = 1000;
-  std::uint64_t seed = 1;
+  std::string seed = "1";
   std::string output;
 };
 
 int run_generate(const GenerateOptions& o) {
-  const exactvis::Scene scene = exactvis::generate_scene(o.kind, o.triangles, o.seed);
+  const exactvis::Scene scene = exactvis::generate_scene(o.kind, o.triangles, exactvis::app::parse_uint64(o.seed, "--seed"));
   exactvis::write_scene_mesh(o.output, scene);
   std::cerr << o.output << ": " << scene.triangles.size() << " triangles, " << scene.objects.size() << " objects\n";
   return 0;

@@ -2,7 +2,10 @@
 // the exact visibility polygon of a point, as JSON (by default answered by a walk in the scene's visibility
 // complex; `sweep`: one angular sweep around the point; both give the same polygon); or with --from-segment/--to-segment, segment-to-segment visibility
 // with an exact witness (docs/cli.md).
+#include "apps/cli_util.hpp"
 #include "apps/command_registry.hpp"
+#include "io/atomic_file.hpp"
+#include "io/load_scene.hpp"
 #include "io/scene2d_json.hpp"
 #include "io/svg_2d.hpp"
 #include "skeleton/complex_segment_visibility_2d.hpp"
@@ -12,6 +15,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cmath>
 #include <iostream>
 #include <stdexcept>
 
@@ -26,13 +30,8 @@ struct Visibility2DOptions {
 
 using ojson = nlohmann::ordered_json;  // keeps the documented key order ("counts" first)
 
-// An exact value: a JSON number when it is exactly a double, else the string "num/den".
-ojson exact_json(const Exact& x) {
-  double d = 0;
-  if (exact_double(x, &d)) return d;
-  return to_rational_string(x);
-}
-ojson point_json(const Point2& p) { return ojson::array({exact_json(p.x), exact_json(p.y)}); }
+using app::exact_json;  // exact values: a JSON number when exactly a double, else "num/den"
+using app::point_json;
 
 Point2 parse_point(const std::string& text) {
   const auto comma = text.find(',');
@@ -46,14 +45,7 @@ Point2 parse_point(const std::string& text) {
 
 // "X0,Y0,X1,Y1" -> two points
 std::array<Point2, 2> parse_segment(const std::string& text, const std::string& option) {
-  std::vector<std::string> parts;
-  std::size_t start = 0;
-  while (true) {
-    const auto comma = text.find(',', start);
-    parts.push_back(text.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
-    if (comma == std::string::npos) break;
-    start = comma + 1;
-  }
+  const std::vector<std::string> parts = app::split(text, ',');
   if (parts.size() != 4) throw std::invalid_argument(option + " expects X0,Y0,X1,Y1 (got '" + text + "')");
   try {
     return {Point2(parse_rational(parts[0]), parse_rational(parts[1])),
@@ -66,14 +58,19 @@ std::array<Point2, 2> parse_segment(const std::string& text, const std::string& 
 int run_segments(const Visibility2DOptions& o) {
   const auto S = parse_segment(o.from_segment, "--from-segment");
   const auto T = parse_segment(o.to_segment, "--to-segment");
+  OutputFiles outputs({o.svg});  // fails now, not after the work, when the output cannot be created
   const Scene2D scene = load_scene2d(o.scene, o.slice);
   SegmentVisibility2D r;
-  if (o.method == "complex") {
-    const VisibilityComplex2D cx = visibility_complex(scene);
-    const ComplexWalkIndex2D index = complex_walk_index(scene, cx);
-    r = segment_visibility_in_complex(index, S[0], S[1], T[0], T[1]);
-  } else {
-    r = segment_visibility(scene, S[0], S[1], T[0], T[1]);
+  try {
+    if (o.method == "complex") {
+      const VisibilityComplex2D cx = visibility_complex(scene);
+      const ComplexWalkIndex2D index = complex_walk_index(scene, cx);
+      r = segment_visibility_in_complex(index, S[0], S[1], T[0], T[1]);
+    } else {
+      r = segment_visibility(scene, S[0], S[1], T[0], T[1]);
+    }
+  } catch (const Scene2DError& e) {  // the viewpoint frame (docs/theory.md §7, "Coordinate range")
+    throw InputError(o.scene + ": " + e.what());
   }
   ojson j;
   j["from_segment"] = {point_json(S[0]), point_json(S[1])};
@@ -89,13 +86,14 @@ int run_segments(const Visibility2DOptions& o) {
     svg_segment(doc, {T[0].ax, T[0].ay}, {T[1].ax, T[1].ay}, "#2ca02c", 3);
     if (r.visible)
       svg_segment(doc, {r.witness_s.ax, r.witness_s.ay}, {r.witness_t.ax, r.witness_t.ay}, "#d62728", 1.5);
-    svg_write(doc, o.svg);
+    outputs.write(o.svg, [&](const std::string& temp) { return svg_write(doc, temp), true; });
   }
+  outputs.commit();
   return 0;
 }
 
 int run(const Visibility2DOptions& o) {
-  if (!(o.margin >= 0)) throw std::invalid_argument("--margin must be >= 0");
+  if (!(o.margin >= 0) || !std::isfinite(o.margin)) throw std::invalid_argument("--margin must be a finite number >= 0");
   if (o.method != "complex" && o.method != "sweep")
     throw std::invalid_argument("--method must be complex or sweep (got '" + o.method + "')");
   const bool segments = !o.from_segment.empty() || !o.to_segment.empty();
@@ -105,9 +103,18 @@ int run(const Visibility2DOptions& o) {
   if (segments) return run_segments(o);
   if (o.from.empty()) throw std::invalid_argument("give --from X,Y (or --from-segment and --to-segment)");
   const Point2 q = parse_point(o.from);
+  OutputFiles outputs({o.svg});  // fails now, not after the work, when the output cannot be created
   const Scene2D base = load_scene2d(o.scene, o.slice);
-  // the frame must contain q strictly: widen it until it does
-  const Scene2D scene = with_frame_around(base, {q}, o.margin);
+  // the frame must contain q strictly: widen it until it does (frame corners are doubles, docs/theory.md §7)
+  Scene2D scene;
+  try {
+    scene = with_frame_around(base, {q}, o.margin);
+  } catch (const Scene2DError& e) {
+    throw InputError(o.scene + ": " + e.what());
+  }
+  if (!frame_contains(scene, q))
+    throw std::invalid_argument("--from " + o.from + ": the point lies beyond every viewpoint frame that doubles "
+                                "can represent (corners up to about 1.8e308)");
   // both throw std::invalid_argument for q inside an object / on a boundary
   VisibilityPolygon2D vp;
   std::vector<int> seen;
@@ -138,8 +145,9 @@ int run(const Visibility2DOptions& o) {
     svg_rings(doc, {ring}, "#ffd54f", "#e6a100", 0.7);
     svg_scene(doc, scene);
     svg_point(doc, {q.ax, q.ay}, "#d62728");
-    svg_write(doc, o.svg);
+    outputs.write(o.svg, [&](const std::string& temp) { return svg_write(doc, temp), true; });
   }
+  outputs.commit();
   return 0;
 }
 

@@ -1,26 +1,25 @@
 // `exactvis visible SCENE... (--cell X0,Y0,Z0,X1,Y1,Z1 | --source-polygon "x,y,z;...") [--triangles all|ID,...]
 //  [--json] [-o result.json] [--vtp out.vtp]`: exact from-region visibility with witnesses.
+#include "apps/cli_util.hpp"
 #include "apps/command_registry.hpp"
-#include "events/progress_bar.hpp"
+#include "io/atomic_file.hpp"
 #include "io/json_number.hpp"
 #include "io/load_scene.hpp"
 #include "io/write_visibility_vtp.hpp"
-#include "io/atomic_file.hpp"
-#include "kernel/spatial_index.hpp"
-#include "region/from_region_visibility.hpp"
+#include "kernel/triangle_index.hpp"
+#include "region/cell_visibility.hpp"
+#include "util/progress_bar.hpp"
 
 #include <nlohmann/json.hpp>
-#include <tbb/global_control.h>
-#include <tbb/parallel_for.h>
 
-#include <cmath>
 #include <fstream>
 #include <iostream>
-#include <sstream>
 
 namespace {
 
 using namespace exactvis;
+using app::split;
+using app::trim;
 
 struct VisibleOptions {
   std::vector<std::string> scenes;
@@ -31,83 +30,15 @@ struct VisibleOptions {
   std::string output;
   std::string vtp;
   int samples = 48;
-  std::uint64_t seed = 1;
+  std::string seed = "1";
   int threads = 0;
   bool quiet = false;
 };
 
-std::vector<std::string> split(const std::string& s, char sep) {
-  std::vector<std::string> out;
-  std::string cur;
-  std::istringstream in(s);
-  while (std::getline(in, cur, sep)) out.push_back(cur);
-  if (!s.empty() && s.back() == sep) out.push_back("");
-  return out;
-}
-
-std::string trim(const std::string& s) {
-  const auto b = s.find_first_not_of(" \t");
-  const auto e = s.find_last_not_of(" \t");
-  return b == std::string::npos ? "" : s.substr(b, e - b + 1);
-}
-
-double parse_double(const std::string& text, const std::string& what) {
-  const std::string t = trim(text);
-  std::size_t used = 0;
-  double v = 0;
-  try {
-    v = std::stod(t, &used);
-  } catch (const std::exception&) {
-    throw std::invalid_argument(what + ": '" + t + "' is not a number");
-  }
-  if (used != t.size()) throw std::invalid_argument(what + ": '" + t + "' is not a number");
-  if (!std::isfinite(v)) throw std::invalid_argument(what + ": '" + t + "' is not finite");
-  return v;
-}
-
-Box3 parse_cell(const std::string& text) {
-  const auto parts = split(text, ',');
-  if (parts.size() != 6) throw std::invalid_argument("--cell needs 6 numbers X0,Y0,Z0,X1,Y1,Z1");
-  Box3 b;
-  for (int k = 0; k < 3; ++k) {
-    b.lo[k] = parse_double(parts[k], "--cell");
-    b.hi[k] = parse_double(parts[k + 3], "--cell");
-    if (!(b.lo[k] < b.hi[k])) throw std::invalid_argument("--cell: need X0 < X1, Y0 < Y1 and Z0 < Z1");
-  }
-  return b;
-}
-
-region::Polygon3 parse_polygon(const std::string& text) {
-  region::Polygon3 poly;
-  for (const auto& vertex : split(text, ';')) {
-    if (trim(vertex).empty()) continue;
-    const auto parts = split(vertex, ',');
-    if (parts.size() != 3) throw std::invalid_argument("--source-polygon: each vertex needs 3 numbers x,y,z");
-    RationalPoint3 p;
-    for (int k = 0; k < 3; ++k) {
-      const std::string t = trim(parts[k]);
-      if (t.find('/') != std::string::npos) {
-        try {
-          p[k] = parse_rational(t);
-        } catch (const std::exception& e) {
-          throw std::invalid_argument(std::string("--source-polygon: ") + e.what());
-        }
-      } else {
-        p[k] = Exact(parse_double(t, "--source-polygon"));
-      }
-    }
-    poly.push_back(p);
-  }
-  try {
-    region::validate_source_polygon(poly);
-  } catch (const std::invalid_argument& e) {
-    throw std::invalid_argument(std::string("--source-polygon: ") + e.what());
-  }
-  return poly;
-}
-
 std::vector<std::int64_t> parse_targets(const std::string& text, const Scene& scene) {
   std::vector<std::int64_t> out;
+  if (trim(text).empty())
+    throw std::invalid_argument("--triangles: no triangle ids given (\"all\" or comma-separated ids)");
   if (trim(text) == "all") {
     for (std::size_t i = 0; i < scene.triangles.size(); ++i) out.push_back(static_cast<std::int64_t>(i));
     return out;
@@ -148,61 +79,49 @@ int run_visible(const VisibleOptions& o) {
   if (o.cell.empty() == o.polygon.empty())
     throw std::invalid_argument("give exactly one source: --cell or --source-polygon");
   if (o.samples < 0) throw std::invalid_argument("--samples must be >= 0");
-  std::optional<Box3> cell;
-  region::Polygon3 polygon;
-  if (!o.cell.empty()) cell = parse_cell(o.cell);
-  else polygon = parse_polygon(o.polygon);
+  region::CellVisibilityOptions co;
+  co.query.samples = o.samples;
+  co.query.seed = app::parse_uint64(o.seed, "--seed");
+  co.threads = app::check_thread_count(o.threads, "--threads");
+  region::VisibilitySource source;
+  if (!o.cell.empty()) source.cell = app::parse_cell(o.cell);
+  else source.polygon = app::parse_source_polygon(o.polygon);
+  const std::optional<region::RationalBox3>& cell = source.cell;
+  const region::Polygon3& polygon = source.polygon;
 
   const Scene scene = load_scenes(o.scenes);
   const std::vector<std::int64_t> targets = parse_targets(o.triangles, scene);
-  const SpatialIndex index(scene);
-  const region::CandidateFinder finder = [&index](const Box3& b) { return index.triangles_in_box(b); };
-  region::VisibilityOptions vo;
-  vo.samples = o.samples;
-  vo.seed = o.seed;
-
-  std::unique_ptr<tbb::global_control> limit;
-  if (o.threads > 0)
-    limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, o.threads);
-  std::vector<region::VisibilityResult> results(targets.size());
+  region::CellVisibility cv;
   {
-    ProgressBar bar("visible", targets.size(), !o.quiet);
-    tbb::parallel_for(std::size_t(0), targets.size(), [&](std::size_t i) {
-      results[i] = cell ? region::visible_from_box(scene, finder, *cell, targets[i], vo)
-                        : region::visible_from_polygon(scene, finder, polygon, targets[i], vo);
-      bar.advance();
-    });
+    ProgressBar bar("visible", targets.size(), app::progress_wanted(o.quiet));
+    co.on_target_done = [&bar] { bar.advance(); };
+    cv = region::visibility_from_source(scene, TriangleIndex(scene), source, targets, co);
   }
+  const std::vector<region::VisibilityResult>& results = cv.results;
 
   nlohmann::json j;
   if (cell)
-    j["source"] = {{"cell", {cell->lo.x, cell->lo.y, cell->lo.z, cell->hi.x, cell->hi.y, cell->hi.z}}};
+    j["source"] = {{"cell", {exact_to_json(cell->lo.x), exact_to_json(cell->lo.y), exact_to_json(cell->lo.z),
+                             exact_to_json(cell->hi.x), exact_to_json(cell->hi.y), exact_to_json(cell->hi.z)}}};
   else {
     nlohmann::json pts = nlohmann::json::array();
     for (const auto& p : polygon) pts.push_back(point_json(p));
     j["source"] = {{"polygon", pts}};
   }
   j["results"] = nlohmann::json::array();
-  region::VisibilityStats total;
-  std::int64_t n_visible = 0;
+  const std::int64_t n_visible = cv.visible;
   for (const auto& r : results) {
     nlohmann::json e;
     e["triangle"] = scene.triangles[r.triangle_index].id;
     e["visible"] = r.visible;
-    if (r.visible) {
-      ++n_visible;
-      e["witness"] = {point_json(r.witness->p), point_json(r.witness->q)};
-    }
+    if (r.visible) e["witness"] = {point_json(r.witness->p), point_json(r.witness->q)};
     j["results"].push_back(e);
-    region::accumulate(total, r.stats);
   }
-  j["stats"] = stats_json(total);
+  j["stats"] = stats_json(cv.stats);
   j["stats"].erase("accepted_by_sampling");
   j["stats"]["queries"] = results.size();
   j["stats"]["visible"] = n_visible;
-  std::int64_t by_sampling = 0;
-  for (const auto& r : results) by_sampling += r.stats.accepted_by_sampling ? 1 : 0;
-  j["stats"]["accepted_by_sampling"] = by_sampling;
+  j["stats"]["accepted_by_sampling"] = cv.accepted_by_sampling;
 
   if (!o.vtp.empty()) {
     std::vector<int> state(scene.triangles.size(), -1);
@@ -244,7 +163,8 @@ const exactvis::app::CommandRegistration registration("visible", 100, [](CLI::Ap
       "Exact from-region visibility: which triangles are visible from a view cell or a convex polygon, with a "
       "witness segment for each visible one (positive-measure definition; docs/theory.md section 5)");
   sub->add_option("scene", o->scenes, "Scene files (.obj .ply .off .stl), loaded as one scene")->required();
-  auto* c = sub->add_option("--cell", o->cell, "Axis-aligned view cell X0,Y0,Z0,X1,Y1,Z1 (X0<X1, Y0<Y1, Z0<Z1)");
+  auto* c = sub->add_option("--cell", o->cell,
+                            "Axis-aligned view cell X0,Y0,Z0,X1,Y1,Z1 (X0<X1, Y0<Y1, Z0<Z1; numbers or num/den)");
   auto* p = sub->add_option("--source-polygon", o->polygon,
                             "Convex planar source polygon \"x,y,z;x,y,z;...\" (numbers or num/den)");
   c->excludes(p);
@@ -254,8 +174,9 @@ const exactvis::app::CommandRegistration registration("visible", 100, [](CLI::Ap
   sub->add_option("--vtp", o->vtp, "Write the scene coloured visible/hidden with the witnesses as lines (.vtp)");
   sub->add_option("--samples", o->samples, "Random segments cast per source/target pair before the exact query")
       ->capture_default_str();
-  sub->add_option("--seed", o->seed, "Seed of the sampling (answers do not depend on it)")->capture_default_str();
-  sub->add_option("--threads", o->threads, "Worker threads (default: all cores)");
+  sub->add_option("--seed", o->seed, "Seed of the sampling (answers do not depend on it)")
+      ->capture_default_str();
+  sub->add_option("--threads", o->threads, "Worker threads: 0 = all cores (default), else 1 .. 1024");
   sub->add_flag("-q,--quiet", o->quiet, "No progress bar on stderr");
   return [o]() { return run_visible(*o); };
 });

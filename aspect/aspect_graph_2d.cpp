@@ -1,16 +1,20 @@
 #include "aspect/aspect_graph_2d.hpp"
 
+#include "util/progress_bar.hpp"
 #include "skeleton/visibility_complex_2d.hpp"
 #include "skeleton/visibility_graph_2d.hpp"
 #include "skeleton/visibility_polygon_2d.hpp"
+#include "util/union_find.hpp"
 
+#include <CGAL/Arr_observer.h>
 #include <CGAL/Arr_segment_traits_2.h>
 #include <CGAL/Arrangement_2.h>
-#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Lazy_exact_nt.h>
+#include <CGAL/Simple_cartesian.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
-#include <atomic>
+#include <cstdint>
 #include <map>
 #include <numeric>
 #include <optional>
@@ -19,7 +23,12 @@
 namespace exactvis {
 namespace {
 
-using K = CGAL::Exact_predicates_exact_constructions_kernel;
+// Cartesian kernel over a lazy exact number type, not CGAL's Epeck: Epeck computes constructions first in
+// interval arithmetic and trusts the kind of result found there, and CGAL's line-line intersection reports
+// "no intersection" when its interval numerators overflow (coordinates beyond ~1e102, whose cubes overflow),
+// which made the arrangement sweep dereference an empty result. Lazy_exact_nt's finiteness test falls back to
+// the exact value, so every decision here is exact for any double input. Same speed on the benchmark grids.
+using K = CGAL::Simple_cartesian<CGAL::Lazy_exact_nt<mpq_class>>;
 using Traits = CGAL::Arr_segment_traits_2<K>;
 using Arr = CGAL::Arrangement_2<Traits>;
 
@@ -68,13 +77,6 @@ std::vector<Point2> ccb_points(Arr::Ccb_halfedge_const_circulator c) {
   return out;
 }
 
-struct UnionFind {
-  std::vector<int> p;
-  explicit UnionFind(int n) : p(n) { std::iota(p.begin(), p.end(), 0); }
-  int find(int x) { while (p[x] != x) x = p[x] = p[p[x]]; return x; }
-  void unite(int a, int b) { p[find(a)] = find(b); }
-};
-
 bool inside_ring_points(const std::vector<Point2>& r, const Point2& p, bool* on_edge) {
   bool in = false;
   for (std::size_t i = 0; i < r.size(); ++i) {
@@ -86,9 +88,36 @@ bool inside_ring_points(const std::vector<Point2>& r, const Point2& p, bool* on_
   return in;
 }
 
+// Reports the arrangement sweep's progress: CGAL's sweep creates each edge when it reaches the edge's right
+// end, so the x of that end, relative to the frame's x-range, grows from 0 to 1 (display only, doubles).
+class SweepProgress : public CGAL::Arr_observer<Arr> {
+ public:
+  static constexpr std::uint64_t kSteps = 1000;
+  SweepProgress(Arr& arr, ProgressBar& bar, double x0, double x1) : CGAL::Arr_observer<Arr>(arr), bar_(bar), x0_(x0), x1_(x1) {}
+  void after_create_edge(Arr::Halfedge_handle e) override {
+    const double x = CGAL::to_double(e->curve().right().x());
+    const double f = x1_ > x0_ ? (x - x0_) / (x1_ - x0_) : 1.0;
+    const auto step = static_cast<std::uint64_t>(std::clamp(f, 0.0, 1.0) * kSteps);
+    if (step > done_) {
+      bar_.advance(step - done_);
+      done_ = step;
+    }
+  }
+  void finish() {
+    if (done_ < kSteps) bar_.advance(kSteps - done_);
+    done_ = kSteps;
+  }
+
+ private:
+  ProgressBar& bar_;
+  double x0_, x1_;
+  std::uint64_t done_ = 0;
+};
+
 }  // namespace
 
-AspectGraph2D aspect_graph(const Scene2D& scene, double margin_ratio, void (*progress)(double)) {
+AspectGraph2D aspect_graph(const Scene2D& scene, double margin_ratio, bool progress,
+                           const std::function<void(std::size_t)>& before_faces) {
   AspectGraph2D g;
   g.framed = with_frame(scene, margin_ratio);
   const Scene2D& s = g.framed;
@@ -96,23 +125,39 @@ AspectGraph2D aspect_graph(const Scene2D& scene, double margin_ratio, void (*pro
   const int n_scene = scene.num_vertices();  // frame vertices come after the scene's
   const VisibilityGraph2D vg = visibility_graph(s);
   // candidate events: extensions beyond u of segments (u, w) where the line is tangent at u
+  std::vector<std::pair<int, int>> candidates;
+  for (const auto& [p, q] : vg.strict_pairs) candidates.emplace_back(p, q), candidates.emplace_back(q, p);
+  for (int v = 0; v < n_scene; ++v) candidates.emplace_back(v, s.next[v]), candidates.emplace_back(s.next[v], v);
+  std::vector<std::optional<Point2>> event_end(candidates.size());
+  {
+    ProgressBar bar("aspect2d: event segments", candidates.size(), progress);
+    tbb::parallel_for(std::size_t(0), candidates.size(), [&](std::size_t i) {
+      const auto [u, w] = candidates[i];
+      bar.advance();
+      if (u >= n_scene || w >= n_scene) return;
+      // direction u - w must point into the open free wedge at u (then the line is tangent there)
+      const Point2 ahead(P[u].x + P[u].x - P[w].x, P[u].y + P[u].y - P[w].y);
+      if (!in_free_wedge(s, u, P[u], ahead)) return;
+      const SegmentEnd2D end = first_contact(s, u, P[u], ahead);
+      if (end.kind == SegmentEnd2D::Infinity) return;  // impossible inside the frame
+      event_end[i] = end.point;
+    });
+  }
   std::vector<Traits::Segment_2> segs;
   for (int v = 0; v < s.num_vertices(); ++v) segs.emplace_back(to_cgal(P[v]), to_cgal(P[s.next[v]]));
-  auto extend = [&](int u, int w) {
-    if (u >= n_scene || w >= n_scene) return;
-    // direction u - w must point into the open free wedge at u (then the line is tangent there)
-    const Point2 ahead(P[u].x + P[u].x - P[w].x, P[u].y + P[u].y - P[w].y);
-    if (!in_free_wedge(s, u, P[u], ahead)) return;
-    const SegmentEnd2D end = first_contact(s, u, P[u], ahead);
-    if (end.kind == SegmentEnd2D::Infinity) return;  // impossible inside the frame
-    segs.emplace_back(to_cgal(P[u]), to_cgal(end.point));
-    ++g.event_segments;
-  };
-  for (const auto& [p, q] : vg.strict_pairs) extend(p, q), extend(q, p);
-  for (int v = 0; v < n_scene; ++v) extend(v, s.next[v]), extend(s.next[v], v);
+  for (std::size_t i = 0; i < candidates.size(); ++i)
+    if (event_end[i]) {
+      segs.emplace_back(to_cgal(P[candidates[i].first]), to_cgal(*event_end[i]));
+      ++g.event_segments;
+    }
   Arr arr;
-  CGAL::insert(arr, segs.begin(), segs.end());
-  if (progress) progress(0.2);
+  {
+    const Ring2D& fr = s.rings[s.frame_ring];
+    ProgressBar bar("aspect2d: arrangement", SweepProgress::kSteps, progress);
+    SweepProgress observer(arr, bar, P[fr.first].ax, P[fr.first + 2].ax);
+    CGAL::insert(arr, segs.begin(), segs.end());
+    observer.finish();
+  }
   // faces, samples, aspects
   std::map<Arr::Face_const_handle, int> index;
   std::vector<Arr::Face_const_handle> handles;
@@ -122,10 +167,11 @@ AspectGraph2D aspect_graph(const Scene2D& scene, double margin_ratio, void (*pro
     handles.push_back(f);
   }
   g.arrangement_faces = handles.size();
+  if (before_faces) before_faces(handles.size());
   g.faces.resize(handles.size());
   std::vector<std::vector<int>> aspect(handles.size());
   std::vector<char> free_face(handles.size(), 0);
-  std::atomic<std::size_t> done{0};
+  ProgressBar bar("aspect2d: faces", handles.size(), progress);
   tbb::parallel_for(std::size_t(0), handles.size(), [&](std::size_t i) {
     AspectFace2D& face = g.faces[i];
     face.outer = ccb_points(handles[i]->outer_ccb());
@@ -137,8 +183,7 @@ AspectGraph2D aspect_graph(const Scene2D& scene, double margin_ratio, void (*pro
       for (int e : visible_edges(s, face.sample))
         if (e < n_scene) aspect[i].push_back(e);
     }
-    const std::size_t d = ++done;
-    if (progress && d % 64 == 0) progress(0.2 + 0.8 * static_cast<double>(d) / handles.size());
+    bar.advance();
   });
   // merge free faces with equal aspects across arrangement edges
   UnionFind uf(static_cast<int>(handles.size()));
@@ -175,7 +220,6 @@ AspectGraph2D aspect_graph(const Scene2D& scene, double margin_ratio, void (*pro
     g.boundaries.push_back({from_cgal(across_edge[k]->source()->point()), from_cgal(across_edge[k]->target()->point())});
   }
   g.adjacency.assign(adj.begin(), adj.end());
-  if (progress) progress(1.0);
   return g;
 }
 

@@ -9,9 +9,10 @@
 // point and its aspect (one exact angular sweep); adjacent free faces with equal aspects are merged into
 // regions, so every remaining boundary is a real event. Cost: O(m^2) arrangement of m = O(n^2) segments in
 // the worst case, plus one O(n log n) sweep per face: meant for small and medium scenes.
-#include "skeleton/scene2d.hpp"
+#include "planar/scene2d.hpp"
 
 #include <array>
+#include <functional>
 #include <utility>
 #include <vector>
 
@@ -39,9 +40,14 @@ struct AspectGraph2D {
   std::size_t arrangement_faces = 0;                  // bounded faces of the arrangement
 };
 
-// Input: a scene (without frame); margin of the viewpoint frame as in with_frame. Output: the partition.
-// `progress` (may be null) gets the fraction done.
-AspectGraph2D aspect_graph(const Scene2D& scene, double margin_ratio = 0.25, void (*progress)(double) = nullptr);
+// Input: a scene (without frame); margin of the viewpoint frame as in with_frame (throws Scene2DError when
+// that frame is not representable). Output: the partition. `progress`: draw progress bars on stderr for the
+// three long stages (event segments, arrangement sweep, one visibility sweep per face). Uses all cores
+// (oneTBB) for the event segments and the faces.
+// `before_faces` (may be empty) is called once the arrangement is built, with its number of bounded faces
+// (each costs one O(n log n) visibility sweep next), e.g. to warn about the remaining cost.
+AspectGraph2D aspect_graph(const Scene2D& scene, double margin_ratio = 0.25, bool progress = false,
+                           const std::function<void(std::size_t faces)>& before_faces = {});
 
 // Region containing p (exact point location over the faces): the region index, -1 inside an object or
 // outside the frame, -2 on an arrangement edge or vertex.

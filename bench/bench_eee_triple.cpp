@@ -6,7 +6,7 @@
 // Usage: bench_eee_triple [--kinds random,town] [--sizes 100,1000,10000,100000] [--triples 1000] [--seed 1]
 #include "bench/bench_util.hpp"
 #include "events/eee_events.hpp"
-#include "events/occluder_index.hpp"
+#include "kernel/triangle_index.hpp"
 #include "events/scene_adjacency.hpp"
 #include "kernel/scene_generators.hpp"
 
@@ -42,7 +42,7 @@ int main(int argc, char** argv) {
     for (const auto& size : sizes) {
       const Scene scene = generate_scene(kind, std::atoll(size.c_str()), seed);
       const SceneAdjacency adj = build_scene_adjacency(scene);
-      const OccluderIndex index(scene);
+      const TriangleIndex index(scene);
       std::mt19937 rng(seed);
       std::uniform_int_distribution<int> pick(0, static_cast<int>(adj.edges.size()) - 1);
       EeeStats stats;
@@ -55,7 +55,7 @@ int main(int argc, char** argv) {
         Box3 box{{std::min(a.x, b.x) - g, std::min(a.y, b.y) - g, std::min(a.z, b.z) - g},
                  {std::max(a.x, b.x) + g, std::max(a.y, b.y) + g, std::max(a.z, b.z) + g}};
         std::vector<int> near;
-        for (int ti : index.triangles_in_box(box)) {
+        for (int ti : index.triangles_meeting_box(box)) {
           const auto& t = scene.triangles[ti];
           for (int k = 0; k < 3; ++k) near.push_back(adj.edge_index(t.v[k], t.v[(k + 1) % 3]));
         }

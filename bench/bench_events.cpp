@@ -40,15 +40,12 @@ Row run(const Scene& scene, const EvOptions& opt) {
 }
 
 // A square light of side 1/10 of the scene's diagonal extent, just above the scene's top, centred.
-std::string light_polygon(const Scene& s) {
+std::vector<Point3> light_polygon(const Scene& s) {
   const Box3 b = bounding_box(s);
   const double cx = std::round((b.lo.x + b.hi.x) / 2), cy = std::round((b.lo.y + b.hi.y) / 2);
   const double h = std::max(1.0, std::round((b.hi.x - b.lo.x) / 20));
   const double z = b.hi.z + h;
-  char buf[256];
-  std::snprintf(buf, sizeof buf, "%.17g,%.17g,%.17g;%.17g,%.17g,%.17g;%.17g,%.17g,%.17g;%.17g,%.17g,%.17g", cx - h,
-                cy - h, z, cx + h, cy - h, z, cx + h, cy + h, z, cx - h, cy + h, z);
-  return buf;
+  return {{cx - h, cy - h, z}, {cx + h, cy - h, z}, {cx + h, cy + h, z}, {cx - h, cy + h, z}};
 }
 
 struct EeeRow {
@@ -145,7 +142,7 @@ int main(int argc, char** argv) {
     for (const auto& n : light) {
       Scene s = generate_scene(kind, std::stoll(n), seed);
       EvOptions opt = base;
-      opt.light_triangles = select_light(s, light_polygon(s)).triangles;
+      opt.light_triangles = append_light_polygon(s, light_polygon(s)).triangles;
       const Row r = run(s, opt);
       const double nn = static_cast<double>(s.triangles.size());
       print(kind, s, r, std::log(r.seconds / prev_t) / std::log(nn / prev_n));
@@ -171,7 +168,7 @@ int main(int argc, char** argv) {
     for (const auto& n : eee_light) {
       Scene s = generate_scene(kind, std::stoll(n), seed);
       EeeOptions opt;
-      opt.light_triangles = select_light(s, light_polygon(s)).triangles;
+      opt.light_triangles = append_light_polygon(s, light_polygon(s)).triangles;
       const EeeRow r = run_eee(s, opt);
       const double nn = static_cast<double>(s.triangles.size());
       eee_print(kind, s, r, std::log(r.seconds / prev_t) / std::log(nn / prev_n));

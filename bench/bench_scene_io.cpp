@@ -6,7 +6,7 @@
 #include "io/load_scene.hpp"
 #include "io/write_mesh.hpp"
 #include "kernel/scene_generators.hpp"
-#include "kernel/spatial_index.hpp"
+#include "kernel/triangle_index.hpp"
 
 #include <chrono>
 #include <cstdio>
@@ -40,7 +40,7 @@ int main(int argc, char** argv) {
     const Scene s = load_scene(path);
     const double load = seconds_since(t0);
     t0 = std::chrono::steady_clock::now();
-    const SpatialIndex index(s);
+    const TriangleIndex index(s);
     const double tree = seconds_since(t0);
     const Box3 all = bounding_box(s);
     std::mt19937_64 rng(1);
@@ -57,14 +57,14 @@ int main(int argc, char** argv) {
         b.lo[k] = coord(k);
         b.hi[k] = b.lo[k] + 1.0;
       }
-      found += index.triangles_in_box(b).size();
+      found += index.candidates_in_box(b).size();
     }
     const double box_rate = queries / seconds_since(t0);
     std::size_t candidates = 0;
     t0 = std::chrono::steady_clock::now();
     for (int q = 0; q < queries; ++q) {
       const Point3 a{coord(0), coord(1), coord(2)}, b{coord(0), coord(1), coord(2)};
-      candidates += index.triangles_near_segment(a, b).size();
+      candidates += index.triangles_meeting_segment(a, b).size();
     }
     const double seg_rate = queries / seconds_since(t0);
     std::printf("%-9lld %9.3f %9.3f %9.3f %9.3f %12.0f %12.0f %12.1f\n", static_cast<long long>(n), gen, write, load,

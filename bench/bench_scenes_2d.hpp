@@ -1,6 +1,6 @@
 #pragma once
 // 2D benchmark scenes of convex polygons in layouts that scale (bench_complex2d, bench_segments2d).
-#include "skeleton/scene2d.hpp"
+#include "planar/scene2d.hpp"
 
 #include <cmath>
 #include <cstdint>

@@ -7,7 +7,7 @@
 // time ~ (effective occluders)^k over the queries that used the exact CSG (see docs/performance.md).
 #include "bench/bench_util.hpp"
 #include "kernel/scene_generators.hpp"
-#include "kernel/spatial_index.hpp"
+#include "kernel/triangle_index.hpp"
 #include "region/from_region_visibility.hpp"
 
 #include <chrono>
@@ -62,8 +62,8 @@ int main(int argc, char** argv) {
   for (const auto& kind : kinds)
     for (const auto& size : sizes) {
       const Scene scene = generate_scene(kind, std::stoll(size), seed);
-      const SpatialIndex index(scene);
-      const region::CandidateFinder finder = [&index](const Box3& b) { return index.triangles_in_box(b); };
+      const TriangleIndex index(scene);
+      const region::CandidateFinder finder = [&index](const Box3& b) { return index.candidates_in_box(b); };
       const Box3 bb = bounding_box(scene);
       const Box3 cell{{bb.lo.x + 0.25, bb.lo.y + 0.25, 1}, {bb.lo.x + 1.5, bb.lo.y + 1.5, 2}};
       std::mt19937_64 rng(seed * 7919 + scene.triangles.size());

@@ -1,10 +1,10 @@
 #include "events/eee_enumeration.hpp"
 
 #include "events/eee_prefilter.hpp"
-#include "events/for_each_index.hpp"
-#include "events/occluder_index.hpp"
-#include "events/progress_bar.hpp"
-#include "kernel/spatial_index.hpp"
+#include "kernel/segment_tetrahedron_intersection.hpp"
+#include "kernel/triangle_index.hpp"
+#include "util/for_each_index.hpp"
+#include "util/progress_bar.hpp"
 
 #include <CGAL/Interval_nt.h>
 #include <tbb/enumerable_thread_specific.h>
@@ -150,8 +150,8 @@ std::vector<Triple> eee_candidate_triples(const Scene& scene, const SceneAdjacen
 
 EeeResult enumerate_eee_events(const Scene& scene, const EeeOptions& options) {
   const SceneAdjacency adj = build_scene_adjacency(scene);
-  const EdgeIndex edges(scene, adj);
-  const OccluderIndex occluders(scene);
+  const EdgeIndex edges = scene_edge_index(scene, adj);
+  const TriangleIndex occluders(scene);
   EeeResult result;
   const std::vector<Triple> triples = eee_candidate_triples(scene, adj, edges, options, &result.stats);
 
@@ -176,7 +176,7 @@ EeeResult enumerate_eee_events(const Scene& scene, const EeeOptions& options) {
   std::sort(result.events.begin(), result.events.end(),
             [](const EeeEvent& a, const EeeEvent& b) { return a.edges < b.edges; });
   if (options.segment_ends && !result.events.empty()) {
-    const SpatialIndex spatial(scene);
+    const TriangleIndex& spatial = occluders;
     const Box3 box = bounding_box(scene);
     ProgressBar ends_bar("EEE segment ends", result.events.size(), options.progress);
     auto ends = [&](EeeEvent& ev) {

@@ -5,10 +5,10 @@
 // on a valid EEE line the three meeting points are distinct and ordered, the middle one lies between the two
 // others, so the middle edge meets the tetrahedron conv(Ei ∪ Ej) of the two outer edges. Outer pairs must
 // pass the edge-rule prefilter both ways (events/eee_prefilter.hpp); middle edges come from an AABB tree
-// over the edges queried with that tetrahedron (events/edge_index.hpp). Each distinct candidate triple is
+// over the edges queried with that tetrahedron (kernel/edge_index.hpp). Each distinct candidate triple is
 // then decided exactly by eee_event (events/eee_events.hpp).
 #include "events/eee_events.hpp"
-#include "events/edge_index.hpp"
+#include "kernel/edge_index.hpp"
 #include "events/scene_adjacency.hpp"
 #include "kernel/scene.hpp"
 

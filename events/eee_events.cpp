@@ -1,12 +1,12 @@
 #include "events/eee_events.hpp"
 
-#include "events/occluder_index.hpp"
-#include "events/ray_first_hit.hpp"
+#include "events/interval_end_key.hpp"
+#include "kernel/ray_first_hit.hpp"
 #include "kernel/predicates.hpp"
 #include "kernel/quadratic_polynomial.hpp"
 #include "kernel/rational_between.hpp"
 #include "kernel/segment_triangle_intersection.hpp"
-#include "kernel/spatial_index.hpp"
+#include "kernel/triangle_index.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -35,7 +35,7 @@ struct Breakpoint {
   RootNumber t;
   bool rational = true;
   Exact q;
-  EeeEnd cause;
+  CriticalEnd cause;
 };
 
 // Sorts by t (exact) and keeps the first breakpoint of each value (stable: earlier entries win the cause).
@@ -48,21 +48,21 @@ void sort_unique(std::vector<Breakpoint>& b) {
 // A closed parameter interval where lines are invalid, with the causes at its ends.
 struct Invalid {
   RootNumber lo, hi;
-  EeeEnd lo_end, hi_end;
+  CriticalEnd lo_end, hi_end;
 };
 
-EeeEnd endpoint_end(int edge, int vertex) {
-  EeeEnd e;
-  e.cause = EeeEnd::Cause::EdgeEndpoint;
-  e.edge = edge;
+CriticalEnd endpoint_end(int edge, int vertex) {
+  CriticalEnd e;
+  e.cause = CriticalEnd::Cause::EdgeEndpoint;
+  e.generator = edge;
   e.vertex = vertex;
   return e;
 }
 
-EeeEnd singular_end(int edge) {
-  EeeEnd e;
-  e.cause = EeeEnd::Cause::Singular;
-  e.edge = edge;
+CriticalEnd singular_end(int edge) {
+  CriticalEnd e;
+  e.cause = CriticalEnd::Cause::Singular;
+  e.generator = edge;
   return e;
 }
 
@@ -129,14 +129,14 @@ RationalLine rational_line(const Family& f, const Exact& t) {
 
 // [0, 1] minus the union of the closed invalid pieces (sorted here): the closures of the components of
 // positive length, with the causes of their ends (end_at_0 / end_at_1 at t = 0 / 1). sample_t is not set.
-std::vector<EeeInterval> free_components(std::vector<Invalid>& invalid, const EeeEnd& end_at_0,
-                                         const EeeEnd& end_at_1) {
+std::vector<CriticalInterval> free_components(std::vector<Invalid>& invalid, const CriticalEnd& end_at_0,
+                                         const CriticalEnd& end_at_1) {
   std::stable_sort(invalid.begin(), invalid.end(), [](const Invalid& x, const Invalid& y) { return x.lo < y.lo; });
-  std::vector<EeeInterval> out;
+  std::vector<CriticalInterval> out;
   RootNumber pos(0);
-  EeeEnd pos_end = end_at_0;
-  auto emit = [&](const RootNumber& t1, const EeeEnd& end1) {
-    EeeInterval iv;
+  CriticalEnd pos_end = end_at_0;
+  auto emit = [&](const RootNumber& t1, const CriticalEnd& end1) {
+    CriticalInterval iv;
     iv.t0 = pos;
     iv.t1 = t1;
     iv.end0 = pos_end;
@@ -154,7 +154,7 @@ std::vector<EeeInterval> free_components(std::vector<Invalid>& invalid, const Ee
   return out;
 }
 
-Breakpoint breakpoint_at(const RootNumber& t, const EeeEnd& cause) {
+Breakpoint breakpoint_at(const RootNumber& t, const CriticalEnd& cause) {
   Breakpoint b{t, true, Exact(0), cause};
   b.rational = root_number_rational(t, &b.q);
   return b;
@@ -169,7 +169,7 @@ struct Occluder {
 
 }  // namespace
 
-std::optional<EeeEvent> eee_event(const Scene& scene, const SceneAdjacency& adj, const OccluderIndex& index,
+std::optional<EeeEvent> eee_event(const Scene& scene, const SceneAdjacency& adj, const TriangleIndex& index,
                                   int e1, int e2, int e3, EeeStats* stats) {
   std::array<int, 3> ei{e1, e2, e3};
   for (int e : ei)
@@ -219,7 +219,7 @@ std::optional<EeeEvent> eee_event(const Scene& scene, const SceneAdjacency& adj,
   std::vector<Breakpoint> base;
   base.push_back({RootNumber(0), true, Exact(0), endpoint_end(0, E[0]->v[0])});
   base.push_back({RootNumber(1), true, Exact(1), endpoint_end(0, E[0]->v[1])});
-  auto add_roots = [&](std::vector<Breakpoint>& out, const Poly& p, const EeeEnd& cause, const RootNumber& lo,
+  auto add_roots = [&](std::vector<Breakpoint>& out, const Poly& p, const CriticalEnd& cause, const RootNumber& lo,
                        const RootNumber& hi) {
     for (const Root& r : real_roots(p))
       if (r.t > lo && r.t < hi) out.push_back({r.t, r.rational, r.q, cause});
@@ -231,9 +231,9 @@ std::optional<EeeEvent> eee_event(const Scene& scene, const SceneAdjacency& adj,
     add_roots(base, f.den[k], singular_end(k), zero, one);
   }
   for (std::size_t j = 0; j < tangency.size(); ++j) {
-    EeeEnd c;
-    c.cause = EeeEnd::Cause::Tangency;
-    c.edge = tangency[j].edge;
+    CriticalEnd c;
+    c.cause = CriticalEnd::Cause::Tangency;
+    c.generator = tangency[j].edge;
     c.triangle = tangency_triangle[j];
     add_roots(base, tangency[j].p, c, zero, one);
   }
@@ -349,7 +349,7 @@ std::optional<EeeEvent> eee_event(const Scene& scene, const SceneAdjacency& adj,
   // Large candidates first (a floating-point heuristic for the order only): every few occluders the free set
   // is recomputed; the search stops when it is empty and later occluders only look inside its hull.
   std::vector<std::pair<double, int>> cand;
-  for (int ti : index.triangles_in_box(box)) {
+  for (int ti : index.triangles_meeting_box(box)) {
     const auto& tr = scene.triangles[ti];
     if (has_edge(tr, E[0]->v) || has_edge(tr, E[1]->v) || has_edge(tr, E[2]->v)) continue;
     const Point3 &p0 = scene.corner(tr, 0), &p1 = scene.corner(tr, 1), &p2 = scene.corner(tr, 2);
@@ -362,7 +362,7 @@ std::optional<EeeEvent> eee_event(const Scene& scene, const SceneAdjacency& adj,
   for (const auto& [key, ti] : cand) {
     if (since_check >= 4) {
       since_check = 0;
-      std::vector<EeeInterval> comps =
+      std::vector<CriticalInterval> comps =
           free_components(invalid, endpoint_end(0, E[0]->v[0]), endpoint_end(0, E[0]->v[1]));
       if (comps.empty()) return std::nullopt;
       vmin = breakpoint_at(comps.front().t0, comps.front().end0);
@@ -409,8 +409,8 @@ std::optional<EeeEvent> eee_event(const Scene& scene, const SceneAdjacency& adj,
         const Vec3<Exact> d = eval(f.Ld, r.q), x = T.c[k] - eval(f.P, r.q);
         const Vec3<Exact> z = cross(d, x);
         if (!(CGAL::is_zero(z.x) && CGAL::is_zero(z.y) && CGAL::is_zero(z.z))) continue;
-        EeeEnd cause;
-        cause.cause = EeeEnd::Cause::Occluder;
+        CriticalEnd cause;
+        cause.cause = CriticalEnd::Cause::Occluder;
         cause.triangle = T.id;
         cause.feature.kind = OccluderFeature::Kind::Vertex;
         cause.feature.ids = {T.ids[k]};
@@ -422,8 +422,8 @@ std::optional<EeeEvent> eee_event(const Scene& scene, const SceneAdjacency& adj,
     for (int k = 0; k < 3; ++k) {
       const PluckerLine<Exact> el = line_through(T.c[k], T.c[(k + 1) % 3]);
       q[k] = dotc(f.Ld, el.m) + dotc(f.Lm, el.d);
-      EeeEnd cause;
-      cause.cause = EeeEnd::Cause::Occluder;
+      CriticalEnd cause;
+      cause.cause = CriticalEnd::Cause::Occluder;
       cause.triangle = T.id;
       cause.feature.kind = OccluderFeature::Kind::Edge;
       cause.feature.ids = {T.ids[k], T.ids[(k + 1) % 3]};
@@ -431,8 +431,8 @@ std::optional<EeeEvent> eee_event(const Scene& scene, const SceneAdjacency& adj,
     }
     // A generator point crossing T's plane (the blocked part starts/stops at the segment's end).
     {
-      EeeEnd cause;
-      cause.cause = EeeEnd::Cause::Occluder;
+      CriticalEnd cause;
+      cause.cause = CriticalEnd::Cause::Occluder;
       cause.triangle = T.id;
       cause.feature.kind = OccluderFeature::Kind::Face;
       cause.feature.ids = {T.ids[0], T.ids[1], T.ids[2]};
@@ -474,7 +474,11 @@ std::optional<EeeEvent> eee_event(const Scene& scene, const SceneAdjacency& adj,
   for (int i = 0; i < 3; ++i) ev.edges[i] = E[i]->v;
   ev.intervals = free_components(invalid, endpoint_end(0, E[0]->v[0]), endpoint_end(0, E[0]->v[1]));
   if (ev.intervals.empty()) return std::nullopt;
-  for (auto& iv : ev.intervals) iv.sample_t = rational_strictly_between(iv.t0, iv.t1);
+  for (auto& iv : ev.intervals) {
+    iv.sample_t = rational_strictly_between(iv.t0, iv.t1);
+    iv.end0.line = eee_end_key(scene, adj, ev, iv.t0, iv.end0);
+    iv.end1.line = eee_end_key(scene, adj, ev, iv.t1, iv.end1);
+  }
   return ev;
 }
 
@@ -518,15 +522,15 @@ std::optional<EeeGeneratorSegment> eee_generator_segment(const Scene& scene, con
   return EeeGeneratorSegment{l.pts[l.lo], l.pts[l.hi], l.pts[1] - l.pts[0]};
 }
 
-void eee_segment_ends(const Scene& scene, const SpatialIndex& spatial, const Box3& box, EeeEvent& event) {
+void eee_segment_ends(const Scene& scene, const TriangleIndex& spatial, const Box3& box, EeeEvent& event) {
   const Family f = event_family(scene, event);
   for (auto& iv : event.intervals) {
     const RationalLine l = rational_line(f, iv.sample_t);
     const Vec3<Exact> d = l.pts[1] - l.pts[0];
     const RayHit front = ray_first_hit(scene, spatial, box, l.pts[l.hi], d);
     const RayHit back = ray_first_hit(scene, spatial, box, l.pts[l.lo], -d);
-    iv.end_object_front = front.triangle >= 0 ? scene.triangles[front.triangle].id : -1;
-    iv.end_object_back = back.triangle >= 0 ? scene.triangles[back.triangle].id : -1;
+    iv.front_object = front.triangle >= 0 ? scene.triangles[front.triangle].id : -1;
+    iv.back_object = back.triangle >= 0 ? scene.triangles[back.triangle].id : -1;
   }
 }
 

@@ -11,6 +11,7 @@
 // E3 as an edge. The valid set is a finite union of intervals whose ends are algebraic of degree <= 2 (VEE
 // lines: rational; EEEE lines through an occluder edge: quadratic); reported are the closures of its
 // components of positive length.
+#include "events/critical_interval.hpp"
 #include "events/ev_events.hpp"
 #include "events/scene_adjacency.hpp"
 #include "kernel/number_types.hpp"
@@ -26,46 +27,17 @@
 
 namespace exactvis {
 
-class OccluderIndex;
-class SpatialIndex;
+class TriangleIndex;
 
-// Why an EEE free interval ends at a parameter.
-struct EeeEnd {
-  enum class Cause {
-    EdgeEndpoint,  // the line passes through an endpoint of E1 (t = 0 or 1), E2 or E3 (a VEE line); `edge` =
-                   // 0, 1, 2 says which generator, `vertex` = the scene vertex id
-    Occluder,      // an occluder starts/stops blocking: `triangle` (stable id), `feature` (Vertex: VEE line
-                   // through that occluder vertex, t rational; Edge: EEEE line meeting that occluder edge's
-                   // line, t in Q(sqrt D); Face: a generator point of the line lies in the occluder's plane,
-                   // i.e. the occluder touches a generator there, t rational)
-    Tangency,      // the line stops being tangent at generator `edge` (0, 1, 2): it lies in the plane of
-                   // `triangle` (stable id), a face incident to that edge
-    Singular,      // the transversal is parallel to E2's (edge 1) or E3's (edge 2) line there (meets it at
-                   // infinity)
-  };
-  Cause cause = Cause::EdgeEndpoint;
-  int edge = -1;
-  int vertex = -1;
-  std::int64_t triangle = -1;
-  OccluderFeature feature;
-};
-
-struct EeeInterval {
-  RootNumber t0, t1;  // 0 <= t0 < t1 <= 1, exact (rational or a + b sqrt(c))
-  EeeEnd end0, end1;
-  // sample_t: a rational strictly inside (t0, t1), set by eee_event.
-  // Objects at both ends of the maximal free segment of the sample line L(sample_t), filled by
-  // eee_segment_ends (not by eee_event): stable ids of the first closed scene triangles hit by the open rays
-  // beyond the two outermost generator points, -1 when the ray leaves the scene. The line is oriented by
-  // d = Q2 - P (from its point P on E1 towards its point Q2 on E2); `front` is the ray leaving the outermost
-  // generator point in direction +d, `back` the one leaving the other outermost point in direction -d.
-  Exact sample_t;
-  std::int64_t end_object_front = -1, end_object_back = -1;
-};
-
+// An EEE event: the free intervals (CriticalInterval: ends rational or a + b sqrt(D)) of the family of three
+// edges. End causes are CriticalEnd's EEE causes (EdgeEndpoint with `generator` 0, 1, 2 and `vertex`;
+// Occluder; Tangency with `generator` and the face `triangle`; Singular with `generator` 1 or 2), each with
+// its extremal line key. sample_t (a rational strictly inside (t0, t1)) is set by eee_event; the end objects
+// (front_object: beyond the outermost generator point in direction d = Q2 - P; back_object: beyond the
+// other outermost point in direction -d) are filled by eee_segment_ends (not by eee_event).
 struct EeeEvent {
   std::array<std::array<int, 2>, 3> edges{};  // scene vertex ids of E1, E2, E3, each sorted; t runs along E1
-  std::vector<EeeInterval> intervals;          // sorted, disjoint except possibly sharing an end
+  std::vector<CriticalInterval> intervals;     // sorted, disjoint except possibly sharing an end
 };
 
 struct EeeStats {
@@ -78,13 +50,14 @@ struct EeeStats {
 // order: they are sorted), or std::nullopt if it has no free interval (or the edges share a vertex, or two
 // supporting lines are coplanar). Exact. Thread-safe (no shared mutable state besides `stats` if given).
 // Throws std::out_of_range for an index outside adj.edges.
-// Sets sample_t of each interval; end_object_front/back are left at -1 (see eee_segment_ends).
-std::optional<EeeEvent> eee_event(const Scene& scene, const SceneAdjacency& adj, const OccluderIndex& index,
+// Sets sample_t and the end keys of each interval; front_object/back_object are left at -1 (see
+// eee_segment_ends).
+std::optional<EeeEvent> eee_event(const Scene& scene, const SceneAdjacency& adj, const TriangleIndex& index,
                                   int e1, int e2, int e3, EeeStats* stats = nullptr);
 
-// Fills end_object_front / end_object_back of every interval of `event` (rays from the sample line, see
-// EeeInterval), exactly, with events/ray_first_hit.hpp. `box` = bounding_box(scene).
-void eee_segment_ends(const Scene& scene, const SpatialIndex& spatial, const Box3& box, EeeEvent& event);
+// Fills front_object / back_object of every interval of `event` (rays from the sample line, see EeeEvent),
+// exactly, with kernel/ray_first_hit.hpp. `box` = bounding_box(scene).
+void eee_segment_ends(const Scene& scene, const TriangleIndex& spatial, const Box3& box, EeeEvent& event);
 
 // The generator segment of L(t) at a rational t (for output): its outermost generator points `back` and
 // `front` and the direction d = Q2 - P(t), front - back a positive multiple of d; std::nullopt where L(t)

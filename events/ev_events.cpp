@@ -1,14 +1,14 @@
 #include "events/ev_events.hpp"
 
 #include "events/ev_interval_split.hpp"
+#include "events/interval_end_key.hpp"
 #include "events/ev_parameter.hpp"
-#include "events/for_each_index.hpp"
-#include "events/occluder_index.hpp"
-#include "events/progress_bar.hpp"
-#include "events/ray_first_hit.hpp"
+#include "util/for_each_index.hpp"
+#include "util/progress_bar.hpp"
 #include "events/tangency.hpp"
 #include "kernel/predicates.hpp"
-#include "kernel/spatial_index.hpp"
+#include "kernel/ray_first_hit.hpp"
+#include "kernel/triangle_index.hpp"
 
 
 #include <algorithm>
@@ -20,8 +20,26 @@ namespace {
 // A closed parameter interval where lines are invalid, with the causes at its ends.
 struct Invalid {
   EvParameter lo, hi;
-  EventEnd lo_end, hi_end;
+  CriticalEnd lo_end, hi_end;
 };
+
+CriticalEnd occluder_end(std::int64_t triangle, const OccluderFeature& feature) {
+  CriticalEnd e;
+  e.cause = CriticalEnd::Cause::Occluder;
+  e.triangle = triangle;
+  e.feature = feature;
+  return e;
+}
+
+CriticalInterval make_interval(const EvParameter& t0, const EvParameter& t1, const CriticalEnd& end0,
+                               const CriticalEnd& end1) {
+  CriticalInterval iv;
+  iv.t0 = RootNumber(t0.exact());
+  iv.t1 = RootNumber(t1.exact());
+  iv.end0 = end0;
+  iv.end1 = end1;
+  return iv;
+}
 
 bool has_vertex(const SceneTriangle& t, int v) { return t.v[0] == v || t.v[1] == v || t.v[2] == v; }
 
@@ -81,19 +99,19 @@ bool covers_unit_interval(std::vector<Invalid> invalid) {
 }
 
 // Sweeps [0, 1] minus the union of closed invalid intervals; keeps components of positive length.
-std::vector<EvInterval> free_components(std::vector<Invalid> invalid) {
+std::vector<CriticalInterval> free_components(std::vector<Invalid> invalid) {
   std::sort(invalid.begin(), invalid.end(), [](const Invalid& x, const Invalid& y) { return x.lo < y.lo; });
-  std::vector<EvInterval> out;
+  std::vector<CriticalInterval> out;
   EvParameter pos = EvParameter::integer(0);
-  EventEnd pos_end;  // EdgeEndpoint
+  CriticalEnd pos_end;  // EdgeEndpoint
   for (const auto& iv : invalid) {
-    if (iv.lo > pos) out.push_back({pos.exact(), iv.lo.exact(), pos_end, iv.lo_end});
+    if (iv.lo > pos) out.push_back(make_interval(pos, iv.lo, pos_end, iv.lo_end));
     if (iv.hi >= pos) {
       pos = iv.hi;
       pos_end = iv.hi_end;
     }
   }
-  if (pos < EvParameter::integer(1)) out.push_back({pos.exact(), Exact(1), pos_end, EventEnd{}});
+  if (pos < EvParameter::integer(1)) out.push_back(make_interval(pos, EvParameter::integer(1), pos_end, CriticalEnd{}));
   return out;
 }
 
@@ -105,7 +123,7 @@ Vec3<Exact> ev_edge_point(const Scene& scene, const std::array<int, 2>& edge, co
   return a + t * (b - a);
 }
 
-std::optional<EvEvent> ev_event(const Scene& scene, const SceneAdjacency& adj, const OccluderIndex& index,
+std::optional<EvEvent> ev_event(const Scene& scene, const SceneAdjacency& adj, const TriangleIndex& index,
                                 const VertexFan& fan, int edge, EvStats* stats) {
   const int v = fan.vertex;
   const SceneEdge& e = adj.edges[edge];
@@ -137,8 +155,8 @@ std::optional<EvEvent> ev_event(const Scene& scene, const SceneAdjacency& adj, c
     for (auto& bp : vertex_rule_breakpoints(scene, fan, av, bv)) pts.push_back(std::move(bp));
     pts.emplace_back(EvParameter::integer(1), -1);
     auto end_at = [&](int ti) {
-      EventEnd x;
-      x.cause = ti >= 0 ? EventEnd::Cause::Tangency : EventEnd::Cause::EdgeEndpoint;
+      CriticalEnd x;
+      x.cause = ti >= 0 ? CriticalEnd::Cause::Tangency : CriticalEnd::Cause::EdgeEndpoint;
       x.triangle = ti >= 0 ? scene.triangles[ti].id : -1;
       return x;
     };
@@ -154,7 +172,7 @@ std::optional<EvEvent> ev_event(const Scene& scene, const SceneAdjacency& adj, c
   // Occluders: closed triangles not incident to V and not having E as an edge. Large ones first (a float
   // heuristic for order only), and stop as soon as the invalid set covers [0, 1].
   std::vector<std::pair<double, int>> cand;
-  for (int ti : index.triangles_meeting(pv, pa, pb)) {
+  for (int ti : index.triangles_meeting_triangle(pv, pa, pb)) {
     const auto& t = scene.triangles[ti];
     if (has_vertex(t, v) || (has_vertex(t, e.v[0]) && has_vertex(t, e.v[1]))) continue;
     const Point3 &p0 = scene.corner(t, 0), &p1 = scene.corner(t, 1), &p2 = scene.corner(t, 2);
@@ -169,9 +187,7 @@ std::optional<EvEvent> ev_event(const Scene& scene, const SceneAdjacency& adj, c
     const auto b = wedge_blocked_interval(pv, pa, pb, {scene.corner(t, 0), scene.corner(t, 1), scene.corner(t, 2)},
                                           {t.v[0], t.v[1], t.v[2]});
     if (!b) continue;
-    EventEnd lo{EventEnd::Cause::Occluder, t.id, b->lo_feature};
-    EventEnd hi{EventEnd::Cause::Occluder, t.id, b->hi_feature};
-    invalid.push_back({b->lo, b->hi, lo, hi});
+    invalid.push_back({b->lo, b->hi, occluder_end(t.id, b->lo_feature), occluder_end(t.id, b->hi_feature)});
     if (++since_check >= 4) {
       since_check = 0;
       if (covers_unit_interval(invalid)) return std::nullopt;
@@ -182,12 +198,18 @@ std::optional<EvEvent> ev_event(const Scene& scene, const SceneAdjacency& adj, c
   ev.edge = e.v;
   ev.intervals = free_components(std::move(invalid));
   if (ev.intervals.empty()) return std::nullopt;
+  for (auto& iv : ev.intervals)
+    for (auto* end : {&iv.end0, &iv.end1}) {
+      const Exact t = rational_parameter(end == &iv.end0 ? iv.t0 : iv.t1);
+      if (end->cause == CriticalEnd::Cause::EdgeEndpoint) end->vertex = CGAL::is_zero(t) ? e.v[0] : e.v[1];
+      end->line = ev_end_key(scene, adj, v, e.v, t, *end);
+    }
   return ev;
 }
 
 EvResult enumerate_ev_events(const Scene& scene, const EvOptions& options) {
   const SceneAdjacency adj = build_scene_adjacency(scene);
-  const OccluderIndex index(scene);
+  const TriangleIndex index(scene);
   const int nv = static_cast<int>(scene.vertices.size());
 
   std::vector<char> light_vertex(nv, 0);
@@ -230,14 +252,14 @@ EvResult enumerate_ev_events(const Scene& scene, const EvOptions& options) {
     result.stats.occluder_tests += per_vertex_stats[v].occluder_tests;
   }
   if (options.segment_ends && !result.events.empty()) {
-    const SpatialIndex spatial(scene);
+    const TriangleIndex& spatial = index;
     const Box3 box = bounding_box(scene);
     ProgressBar ends_bar("segment ends", result.events.size(), options.progress);
     auto ends = [&](EvEvent& ev) {
       if (options.split_at_end_objects) {
-        std::vector<EvInterval> pieces;
+        std::vector<CriticalInterval> pieces;
         for (const auto& iv : ev.intervals)
-          for (auto& piece : split_ev_interval(scene, spatial, box, ev.vertex, ev.edge, iv))
+          for (auto& piece : split_ev_interval(scene, adj, spatial, box, ev.vertex, ev.edge, iv))
             pieces.push_back(std::move(piece));
         ev.intervals = std::move(pieces);
         ends_bar.advance();
@@ -245,13 +267,13 @@ EvResult enumerate_ev_events(const Scene& scene, const EvOptions& options) {
       }
       const Vec3<Exact> V = to_rational(scene.vertices[ev.vertex]);
       for (auto& iv : ev.intervals) {
-        iv.sample_t = (iv.t0 + iv.t1) / 2;
+        iv.sample_t = (rational_parameter(iv.t0) + rational_parameter(iv.t1)) / 2;
         const Vec3<Exact> p = ev_edge_point(scene, ev.edge, iv.sample_t);
         const Vec3<Exact> d = p - V;
         const RayHit beyond = ray_first_hit(scene, spatial, box, p, d);
         const RayHit behind = ray_first_hit(scene, spatial, box, V, -d);
-        iv.beyond_edge = beyond.triangle >= 0 ? scene.triangles[beyond.triangle].id : -1;
-        iv.behind_vertex = behind.triangle >= 0 ? scene.triangles[behind.triangle].id : -1;
+        iv.front_object = beyond.triangle >= 0 ? scene.triangles[beyond.triangle].id : -1;
+        iv.back_object = behind.triangle >= 0 ? scene.triangles[behind.triangle].id : -1;
       }
       ends_bar.advance();
     };

@@ -5,7 +5,9 @@
 // V and P(t) = A + t (B - A), t in [0, 1]. Line t is *valid* iff it is tangent at E (edge rule) and at V
 // (vertex rule), and the open segment (V, P(t)) meets no occluder: a closed triangle not incident to V and
 // not having E as an edge. The valid set is a finite union of intervals; reported are the closures of its
-// components of positive length ("free intervals"), with exact rational ends.
+// components of positive length ("free intervals"), with exact rational ends (events/critical_interval.hpp)
+// and the extremal line key of each end (events/interval_end_key.hpp).
+#include "events/critical_interval.hpp"
 #include "events/scene_adjacency.hpp"
 #include "events/wedge_blocking.hpp"
 #include "kernel/number_types.hpp"
@@ -18,40 +20,21 @@
 
 namespace exactvis {
 
-class OccluderIndex;
+class TriangleIndex;
 struct VertexFan;
 
-// Why a free interval ends at a parameter.
-struct EventEnd {
-  enum class Cause {
-    EdgeEndpoint,  // t = 0 or 1: the line through V and an endpoint of E (a VV line)
-    Occluder,      // an occluder starts/stops blocking: `triangle` (stable id) and its `feature`
-    Tangency,      // the line stops being tangent at V: `triangle` (stable id) is the fan triangle whose
-                   // plane it lies in there, or -1 when the change is a winding change of V's closed fan
-    EndObjectChange,  // not an end of the valid set: a free interval is split here because an object at an
-                      // end of the maximal free segment changes (events/ev_interval_split.hpp)
-  };
-  Cause cause = Cause::EdgeEndpoint;
-  std::int64_t triangle = -1;
-  OccluderFeature feature;  // meaningful for Occluder
-};
-
-struct EvInterval {
-  Exact t0, t1;     // 0 <= t0 < t1 <= 1
-  EventEnd end0, end1;
-  // Objects at both ends of the maximal free segment of the sample line L(sample_t), sample_t = (t0 + t1) / 2:
-  // stable ids of the first triangles hit beyond E (from P(t) away from V) and behind V (from V away from E),
-  // -1 when the line leaves the scene. Filled by enumerate_ev_events when EvOptions::segment_ends is set; with
-  // EvOptions::split_at_end_objects (default) free intervals are split where they change, so they are
-  // constant on the open interval (t0, t1); without it they may change inside (docs/theory.md section 6).
-  Exact sample_t;
-  std::int64_t beyond_edge = -1, behind_vertex = -1;
-};
-
+// An EV event: the free intervals (CriticalInterval, rational ends) of the family of V and E. In each
+// interval, the end causes are CriticalEnd's EV causes (EdgeEndpoint with `vertex` = E's endpoint at t = 0
+// or 1, Occluder, Tangency with V's triangle `triangle`, EndObjectChange); `generator` is unused (-1). The
+// end objects (CriticalInterval::front_object: first triangle hit beyond E, from P(t) away from V;
+// back_object: behind V, from V away from E) are those of the sample line L(sample_t), sample_t = (t0 + t1)
+// / 2; filled by enumerate_ev_events when EvOptions::segment_ends is set; with
+// EvOptions::split_at_end_objects (default) free intervals are split where they change, so they are
+// constant on the open interval (t0, t1); without it they may change inside (docs/theory.md section 6).
 struct EvEvent {
   int vertex = -1;                 // scene vertex id of V
   std::array<int, 2> edge{};       // scene vertex ids of E, edge[0] < edge[1]; t runs from edge[0] to edge[1]
-  std::vector<EvInterval> intervals;  // sorted, disjoint except possibly sharing an end
+  std::vector<CriticalInterval> intervals;  // sorted, disjoint except possibly sharing an end
 };
 
 struct EvStats {
@@ -80,7 +63,7 @@ EvResult enumerate_ev_events(const Scene& scene, const EvOptions& options = {});
 
 // The one EV event of vertex `v` and edge `adj.edges[edge]` (std::nullopt if no free interval).
 // `fan` must be build_vertex_fan(scene, adj, v). Exposed for tests and the skeleton.
-std::optional<EvEvent> ev_event(const Scene& scene, const SceneAdjacency& adj, const OccluderIndex& index,
+std::optional<EvEvent> ev_event(const Scene& scene, const SceneAdjacency& adj, const TriangleIndex& index,
                                 const VertexFan& fan, int edge, EvStats* stats = nullptr);
 
 // The point P(t) on the edge (exact).

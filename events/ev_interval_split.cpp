@@ -1,6 +1,7 @@
 #include "events/ev_interval_split.hpp"
 
-#include "events/ray_first_hit.hpp"
+#include "events/interval_end_key.hpp"
+#include "kernel/ray_first_hit.hpp"
 #include "kernel/predicates.hpp"
 
 #include <CGAL/Interval_nt.h>
@@ -20,11 +21,15 @@ struct P2 {
   Exact alpha, beta;
 };
 
-// Segment in which a candidate triangle meets the wedge plane (p == q for a touching vertex).
+// Segment in which a candidate triangle meets the wedge plane (p == q for a touching vertex), with the
+// triangle's features its ends lie on (a vertex in the plane, or an edge crossing it).
 struct Seg {
   int triangle;
   P2 p, q;
+  OccluderFeature pf, qf;
 };
+
+OccluderFeature vertex_feature(int v) { return {OccluderFeature::Kind::Vertex, {v}}; }
 
 Exact cross2(const P2& u, const P2& v) { return u.alpha * v.beta - u.beta * v.alpha; }
 P2 sub(const P2& u, const P2& v) { return {u.alpha - v.alpha, u.beta - v.beta}; }
@@ -77,8 +82,13 @@ Box3 swept_box(const Point3& v, const Point3& a, const Point3& b, const Exact& t
 
 }  // namespace
 
-std::vector<EvInterval> split_ev_interval(const Scene& scene, const SpatialIndex& spatial, const Box3& box,
-                                          int vertex, const std::array<int, 2>& edge, const EvInterval& interval) {
+std::vector<CriticalInterval> split_ev_interval(const Scene& scene, const SceneAdjacency& adj,
+                                                const TriangleIndex& spatial, const Box3& box, int vertex,
+                                                const std::array<int, 2>& edge, const CriticalInterval& interval_in) {
+  // EV parameters are rational.
+  struct RationalInterval {
+    Exact t0, t1;
+  } const interval{rational_parameter(interval_in.t0), rational_parameter(interval_in.t1)};
   const Point3& pv = scene.vertices[vertex];
   const Point3& pa = scene.vertices[edge[0]];
   const Point3& pb = scene.vertices[edge[1]];
@@ -132,8 +142,8 @@ std::vector<EvInterval> split_ev_interval(const Scene& scene, const SpatialIndex
   };
 
   // Candidate triangles of both sides and their segments in the wedge plane.
-  std::vector<std::int64_t> cand = spatial.triangles_in_box(swept_box(pv, pa, pb, interval.t0, interval.t1, box, true));
-  for (std::int64_t ti : spatial.triangles_in_box(swept_box(pv, pa, pb, interval.t0, interval.t1, box, false)))
+  std::vector<std::int64_t> cand = spatial.candidates_in_box(swept_box(pv, pa, pb, interval.t0, interval.t1, box, true));
+  for (std::int64_t ti : spatial.candidates_in_box(swept_box(pv, pa, pb, interval.t0, interval.t1, box, false)))
     cand.push_back(ti);
   std::sort(cand.begin(), cand.end());
   cand.erase(std::unique(cand.begin(), cand.end()), cand.end());
@@ -156,31 +166,36 @@ std::vector<EvInterval> split_ev_interval(const Scene& scene, const SpatialIndex
     }
     // Keep only segments whose parameter range can meet [t0, t1] (t is monotone along a segment on which
     // sigma = alpha + beta keeps its sign; otherwise keep it).
-    auto push = [&](const P2& p, const P2& q) {
+    auto push = [&](const P2& p, const P2& q, const OccluderFeature& pf, const OccluderFeature& qf) {
       const int sp = CGAL::sign(p.alpha + p.beta), sq = CGAL::sign(q.alpha + q.beta);
       if (sp != 0 && sp == sq) {
         const Exact tp = p.beta / (p.alpha + p.beta), tq = q.beta / (q.alpha + q.beta);
         if (std::max(tp, tq) < interval.t0 || std::min(tp, tq) > interval.t1) return;
       }
       segs_of[ti].push_back(segs.size());
-      segs.push_back({ti, p, q});
+      segs.push_back({ti, p, q, pf, qf});
     };
     if (o[0] == 0 && o[1] == 0 && o[2] == 0) {  // coplanar: its three edges
-      for (int k = 0; k < 3; ++k) push(wc[k], wc[(k + 1) % 3]);
+      for (int k = 0; k < 3; ++k) push(wc[k], wc[(k + 1) % 3], vertex_feature(t.v[k]), vertex_feature(t.v[(k + 1) % 3]));
       continue;
     }
     std::vector<P2> pts;
+    std::vector<OccluderFeature> feats;
     for (int k = 0; k < 3; ++k) {
-      if (o[k] == 0) pts.push_back(wc[k]);
+      if (o[k] == 0) {
+        pts.push_back(wc[k]);
+        feats.push_back(vertex_feature(t.v[k]));
+      }
       const int j = (k + 1) % 3;
       if (o[k] * o[j] < 0) {  // the edge crosses the plane: interpolate (coordinates are affine)
         const Exact fk = dot(w[k] - V, n), fj = dot(w[j] - V, n);
         const Exact lambda = fk / (fk - fj);
         pts.push_back({wc[k].alpha + lambda * (wc[j].alpha - wc[k].alpha), wc[k].beta + lambda * (wc[j].beta - wc[k].beta)});
+        feats.push_back({OccluderFeature::Kind::Edge, {t.v[k], t.v[j]}});
       }
     }
     if (pts.empty()) continue;
-    push(pts.front(), pts.back());
+    push(pts.front(), pts.back(), feats.front(), feats.back());
   }
 
   // (a) endpoints of all segments. Endpoints strictly between V and E (0 < sigma < 1) cannot lie on a line
@@ -188,17 +203,18 @@ std::vector<EvInterval> split_ev_interval(const Scene& scene, const SpatialIndex
   struct Endpoint {
     Exact t, sigma;
     int triangle;
+    const OccluderFeature* feature;
   };
   std::vector<Endpoint> eps;
-  auto add_ep = [&](const P2& x, int tri) {
+  auto add_ep = [&](const P2& x, int tri, const OccluderFeature& f) {
     const Exact sigma = x.alpha + x.beta;
     if (!(sigma >= 1 || CGAL::sign(sigma) < 0)) return;
     const Exact t = x.beta / sigma;
-    if (t > interval.t0 && t < interval.t1) eps.push_back({t, sigma, tri});
+    if (t > interval.t0 && t < interval.t1) eps.push_back({t, sigma, tri, &f});
   };
   for (const auto& sg : segs) {
-    add_ep(sg.p, sg.triangle);
-    add_ep(sg.q, sg.triangle);
+    add_ep(sg.p, sg.triangle, sg.pf);
+    add_ep(sg.q, sg.triangle, sg.qf);
   }
   std::sort(eps.begin(), eps.end(), [](const Endpoint& x, const Endpoint& y) { return x.t < y.t; });
   std::vector<Exact> bps{interval.t0};
@@ -218,6 +234,9 @@ std::vector<EvInterval> split_ev_interval(const Scene& scene, const SpatialIndex
     const RayHit g = ray_first_hit(scene, spatial, box, V, -d);
     return std::pair<int, int>{f.triangle, g.triangle};
   };
+  // What the line passes through at a crossing breakpoint (the first found); endpoint breakpoints are looked
+  // up in `eps` (sorted by t) when a piece ends there.
+  std::map<Exact, CriticalEnd> crossing_at;
   // (b) crossings of a triangle's segments with the other segments, inside (t0, t1); cached per triangle.
   std::map<int, std::vector<Exact>> crossing_cache;
   auto crossings_of = [&](int tri) -> const std::vector<Exact>& {
@@ -238,8 +257,17 @@ std::vector<EvInterval> split_ev_interval(const Scene& scene, const SpatialIndex
         const Exact u = cross2(w, d2) / den, v = cross2(w, d1) / den;
         if (u < 0 || u > 1 || v < 0 || v > 1) continue;
         if (const auto t = param_of(P2{f.p.alpha + u * d1.alpha, f.p.beta + u * d1.beta});
-            t && *t > interval.t0 && *t < interval.t1)
+            t && *t > interval.t0 && *t < interval.t1) {
           out.push_back(*t);
+          if (!crossing_at.count(*t)) {
+            CriticalEnd c;
+            c.cause = CriticalEnd::Cause::EndObjectChange;
+            c.triangle = scene.triangles[tri].id;
+            c.other_triangle = scene.triangles[g.triangle].id;
+            c.feature = {OccluderFeature::Kind::Face, {}};
+            crossing_at.emplace(*t, std::move(c));
+          }
+        }
       }
     }
     std::sort(out.begin(), out.end());
@@ -319,8 +347,22 @@ std::vector<EvInterval> split_ev_interval(const Scene& scene, const SpatialIndex
     }
   }
 
+  // The end where the objects change at t (inner ends of the merged pieces).
+  auto change_end = [&](const Exact& t) {
+    CriticalEnd c;
+    const auto ep = std::lower_bound(eps.begin(), eps.end(), t, [](const Endpoint& e, const Exact& x) { return e.t < x; });
+    if (ep != eps.end() && ep->t == t) {  // an endpoint breakpoint (these take precedence over crossings)
+      c.cause = CriticalEnd::Cause::EndObjectChange;
+      c.triangle = scene.triangles[ep->triangle].id;
+      c.feature = *ep->feature;
+    } else {
+      c = crossing_at.at(t);
+    }
+    c.line = ev_end_key(scene, adj, vertex, edge, t, c);
+    return c;
+  };
   // Merge equal neighbours; sample at the merged midpoint when the objects there are the piece's.
-  std::vector<EvInterval> out;
+  std::vector<CriticalInterval> out;
   std::size_t i = 0;
   while (i < pieces.size()) {
     std::size_t j = i, widest = i;
@@ -328,18 +370,18 @@ std::vector<EvInterval> split_ev_interval(const Scene& scene, const SpatialIndex
       ++j;
       if (pieces[j].t1 - pieces[j].t0 > pieces[widest].t1 - pieces[widest].t0) widest = j;
     }
-    EvInterval iv;
-    iv.t0 = pieces[i].t0;
-    iv.t1 = pieces[j].t1;
-    iv.end0 = i == 0 ? interval.end0 : EventEnd{EventEnd::Cause::EndObjectChange, -1, {}};
-    iv.end1 = j + 1 == pieces.size() ? interval.end1 : EventEnd{EventEnd::Cause::EndObjectChange, -1, {}};
-    iv.beyond_edge = pieces[i].front;
-    iv.behind_vertex = pieces[i].back;
-    iv.sample_t = (iv.t0 + iv.t1) / 2;
+    CriticalInterval iv;
+    iv.t0 = RootNumber(pieces[i].t0);
+    iv.t1 = RootNumber(pieces[j].t1);
+    iv.end0 = i == 0 ? interval_in.end0 : change_end(pieces[i].t0);
+    iv.end1 = j + 1 == pieces.size() ? interval_in.end1 : change_end(pieces[j].t1);
+    iv.front_object = pieces[i].front;
+    iv.back_object = pieces[i].back;
+    iv.sample_t = (pieces[i].t0 + pieces[j].t1) / 2;
     if (j > i) {
       const auto [f, g] = objects_at(iv.sample_t);
       const std::int64_t fid = f >= 0 ? scene.triangles[f].id : -1, gid = g >= 0 ? scene.triangles[g].id : -1;
-      if (fid != iv.beyond_edge || gid != iv.behind_vertex)
+      if (fid != iv.front_object || gid != iv.back_object)
         iv.sample_t = (pieces[widest].t0 + pieces[widest].t1) / 2;
     }
     out.push_back(std::move(iv));

@@ -8,11 +8,12 @@
 // a candidate triangle meets the wedge plane (a triangle vertex in the plane, or a triangle edge crossing it;
 // coplanar triangles contribute their edges), or (b) a crossing point of the current end object's segment
 // with another candidate's segment. The split collects (a) from all triangles that can meet the swept
-// regions (AABB query of an exact enclosure), evaluates the end objects exactly (events/ray_first_hit.hpp)
+// regions (AABB query of an exact enclosure), evaluates the end objects exactly (kernel/ray_first_hit.hpp)
 // at the midpoint of each piece, adds (b) for the object found there and recurses, and finally merges equal
 // neighbours.
 #include "events/ev_events.hpp"
-#include "kernel/spatial_index.hpp"
+#include "events/scene_adjacency.hpp"
+#include "kernel/triangle_index.hpp"
 
 #include <vector>
 
@@ -21,8 +22,11 @@ namespace exactvis {
 // Input: the scene, its spatial index and bounding box, the vertex id V and edge (vertex ids) of an EV event,
 // and one of its free intervals. Output: consecutive pieces covering [t0, t1] (at least one) with sample_t
 // (the piece's midpoint), beyond_edge and behind_vertex filled; neighbours differ in at least one object.
-// Outer ends keep the interval's end causes; inner ends have cause EndObjectChange. Exact.
-std::vector<EvInterval> split_ev_interval(const Scene& scene, const SpatialIndex& spatial, const Box3& box,
-                                          int vertex, const std::array<int, 2>& edge, const EvInterval& interval);
+// Outer ends keep the interval's end causes; inner ends have cause EndObjectChange, with the feature the line
+// passes through there (a vertex or an edge of a triangle meeting the wedge plane, or a crossing of two
+// triangles' sections) and its extremal line key. `adj` is the scene's adjacency. Exact.
+std::vector<CriticalInterval> split_ev_interval(const Scene& scene, const SceneAdjacency& adj,
+                                                const TriangleIndex& spatial, const Box3& box, int vertex,
+                                                const std::array<int, 2>& edge, const CriticalInterval& interval);
 
 }  // namespace exactvis

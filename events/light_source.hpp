@@ -1,7 +1,9 @@
 #pragma once
-// The light of light-restricted events: a named object of the scene, or a polygon given on the command line.
+// The light of light-restricted events: a named object of the scene, or a polygon appended to the scene.
+// (The --light option text is parsed in apps/cli_util.hpp.)
 #include "kernel/scene.hpp"
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -13,11 +15,15 @@ struct LightSource {
   std::string name;            // object name
 };
 
-// Input: the scene and a spec: the exact name of a scene object, or a polygon "x,y,z;x,y,z;x,y,z[;...]"
-// (planar or not, >= 3 points, fan-triangulated from its first point; every fan triangle must have non-zero
-// area). A polygon is appended to `scene` as object "light": its vertices get the next vertex ids in the
-// order given, its triangles the next triangle ids. Output: the light. Throws std::invalid_argument with a
-// one-line message for an unknown name or a malformed / degenerate polygon.
-LightSource select_light(Scene& scene, const std::string& spec);
+// The scene object named exactly `name` as the light (its triangles), or std::nullopt when no object has
+// that name. Throws std::invalid_argument("object has no triangles") for a named object without triangles.
+std::optional<LightSource> light_from_object(const Scene& scene, const std::string& name);
+
+// Appends the polygon `points` (planar or not, >= 3 points, fan-triangulated from its first point; every fan
+// triangle must have non-zero area) to `scene` as object "light": its vertices get the next vertex ids in
+// the order given, its triangles the next triangle ids (after the largest id and after faces_read). Returns
+// the light. Throws std::invalid_argument ("a polygon needs at least 3 points", "fan triangle K has zero
+// area") and leaves the scene unchanged then.
+LightSource append_light_polygon(Scene& scene, const std::vector<Point3>& points);
 
 }  // namespace exactvis

@@ -35,4 +35,11 @@ SceneAdjacency build_scene_adjacency(const Scene& scene) {
   return adj;
 }
 
+EdgeIndex scene_edge_index(const Scene& scene, const SceneAdjacency& adj) {
+  std::vector<std::array<int, 2>> pairs;
+  pairs.reserve(adj.edges.size());
+  for (const auto& e : adj.edges) pairs.push_back(e.v);
+  return EdgeIndex(scene, pairs);
+}
+
 }  // namespace exactvis

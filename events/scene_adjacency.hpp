@@ -4,6 +4,7 @@
 // Adjacency follows vertex *ids* only (docs/theory.md section 6): two triangles are adjacent iff they share
 // vertex ids. Triangle soups may have edges with 1 or more than 2 triangles (non-manifold), which OpenMesh's
 // TriMesh cannot represent, so the tables are plain vectors.
+#include "kernel/edge_index.hpp"
 #include "kernel/scene.hpp"
 
 #include <array>
@@ -26,5 +27,8 @@ struct SceneAdjacency {
 
 // Builds the edge list and incidence tables of `scene` (O(n log n)).
 SceneAdjacency build_scene_adjacency(const Scene& scene);
+
+// The spatial index of adj.edges (edge k of the index is adj.edges[k]). O(n log n).
+EdgeIndex scene_edge_index(const Scene& scene, const SceneAdjacency& adj);
 
 }  // namespace exactvis

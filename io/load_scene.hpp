@@ -11,7 +11,10 @@
 // - Objects: OBJ `g`/`o` groups when the file has any, else connected components over shared vertex ids.
 // - Coordinates: OBJ, ASCII OFF, PLY (ASCII and binary, any scalar type) and ASCII STL coordinates are read
 //   as exact doubles by us (OpenMesh parses float32); binary STL is float32 by definition. Binary OFF is
-//   refused.
+//   refused. Any finite double is a coordinate, beyond float32's range too, in every format; NaN, infinities
+//   and decimals beyond the largest double are refused with one message (io/mesh_text.hpp).
+// - Faces: OBJ, OFF and PLY faces are read by us and must equal OpenMesh's reading; PLY counts are checked
+//   against their types and the file size first. UTF-16/32 text is refused by name, a UTF-8 BOM skipped.
 #include "kernel/scene.hpp"
 
 #include <stdexcept>

@@ -4,7 +4,7 @@
 // JSON: {"polygons": [P, ...]} where P is either a ring [[x,y], ...] (a polygon without holes) or a list of
 // rings [[[x,y],...], [[x,y],...], ...] (outer boundary first, then holes). Coordinates are JSON numbers
 // (taken as the exact doubles they are) or strings "num/den". Rings are not closed (no repeated vertex).
-#include "skeleton/scene2d.hpp"
+#include "planar/scene2d.hpp"
 
 #include <string>
 #include <vector>
@@ -15,9 +15,8 @@ namespace exactvis {
 std::vector<PolygonInput2D> read_polygons2d_json(const std::string& path);
 
 // Section of a 3D scene file (any format load_scenes reads) by the plane `spec`, "x=V", "y=V" or "z=V"
-// (V exact, e.g. 1.5 or 3/2). Plane coordinates: z -> (x, y), x -> (y, z), y -> (z, x). The section must
-// consist of closed loops (watertight meshes) that avoid mesh vertices; nested loops become holes.
-// Throws InputError with a one-line reason otherwise.
+// (V exact, e.g. 1.5 or 3/2): planar/slice_scene.hpp (plane coordinates, loops, holes). Throws InputError
+// ("FILE: reason") when the file cannot be read or the slice cannot be made.
 std::vector<PolygonInput2D> slice_scene_file(const std::string& path, const std::string& spec);
 
 // Either of the above (slice when `slice_spec` is non-empty), validated into a Scene2D.

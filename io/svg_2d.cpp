@@ -1,9 +1,12 @@
 #include "io/svg_2d.hpp"
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 #include <cstdio>
 #include <fstream>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 
@@ -19,11 +22,21 @@ std::string num(double v) {
   return s.str();
 }
 
+// A world coordinate in SVG units.
+double to_svg(const SvgDocument2D& d, double v) {
+  if (!std::isfinite(v)) v = std::copysign(std::numeric_limits<double>::max(), v);
+  return v * d.scale;
+}
+std::string coord(const SvgDocument2D& d, double v) { return num(to_svg(d, v)); }
+
 }  // namespace
 
 SvgDocument2D svg_document(double lo_x, double lo_y, double hi_x, double hi_y) {
-  const double m = 0.02 * std::max({hi_x - lo_x, hi_y - lo_y, 1e-9});
   SvgDocument2D d;
+  const double big = std::max({std::fabs(lo_x), std::fabs(lo_y), std::fabs(hi_x), std::fabs(hi_y)});
+  if (!(big <= 1e15)) d.scale = std::ldexp(1.0, -std::max(0, std::ilogb(std::isfinite(big) ? big : 1e308) - 40));
+  lo_x = to_svg(d, lo_x), lo_y = to_svg(d, lo_y), hi_x = to_svg(d, hi_x), hi_y = to_svg(d, hi_y);
+  const double m = 0.02 * std::max({hi_x - lo_x, hi_y - lo_y, 1e-9});
   d.lo_x = lo_x - m;
   d.lo_y = lo_y - m;
   d.hi_x = hi_x + m;
@@ -45,7 +58,7 @@ void svg_rings(SvgDocument2D& doc, const std::vector<std::vector<std::array<doub
                const std::string& fill, const std::string& stroke, double fill_opacity) {
   std::string path;
   for (const auto& r : rings) {
-    for (std::size_t i = 0; i < r.size(); ++i) path += (i ? "L" : "M") + num(r[i][0]) + "," + num(r[i][1]) + " ";
+    for (std::size_t i = 0; i < r.size(); ++i) path += (i ? "L" : "M") + coord(doc, r[i][0]) + "," + coord(doc, r[i][1]) + " ";
     if (!r.empty()) path += "Z ";
   }
   doc.items.push_back("<path d=\"" + path + "\" fill=\"" + fill + "\" fill-opacity=\"" + num(fill_opacity) +
@@ -55,13 +68,13 @@ void svg_rings(SvgDocument2D& doc, const std::vector<std::vector<std::array<doub
 
 void svg_segment(SvgDocument2D& doc, std::array<double, 2> a, std::array<double, 2> b, const std::string& stroke,
                  double width_ratio, bool dashed) {
-  doc.items.push_back("<line x1=\"" + num(a[0]) + "\" y1=\"" + num(a[1]) + "\" x2=\"" + num(b[0]) + "\" y2=\"" +
-                      num(b[1]) + "\" stroke=\"" + stroke + "\" stroke-width=\"" + num(unit(doc) * width_ratio) +
+  doc.items.push_back("<line x1=\"" + coord(doc, a[0]) + "\" y1=\"" + coord(doc, a[1]) + "\" x2=\"" + coord(doc, b[0]) +
+                      "\" y2=\"" + coord(doc, b[1]) + "\" stroke=\"" + stroke + "\" stroke-width=\"" + num(unit(doc) * width_ratio) +
                       "\"" + (dashed ? " stroke-dasharray=\"" + num(4 * unit(doc)) + "\"" : "") + "/>");
 }
 
 void svg_point(SvgDocument2D& doc, std::array<double, 2> p, const std::string& fill) {
-  doc.items.push_back("<circle cx=\"" + num(p[0]) + "\" cy=\"" + num(p[1]) + "\" r=\"" + num(3 * unit(doc)) +
+  doc.items.push_back("<circle cx=\"" + coord(doc, p[0]) + "\" cy=\"" + coord(doc, p[1]) + "\" r=\"" + num(3 * unit(doc)) +
                       "\" fill=\"" + fill + "\"/>");
 }
 
@@ -79,7 +92,7 @@ void svg_scene(SvgDocument2D& doc, const Scene2D& s) {
 
 void svg_write(const SvgDocument2D& d, const std::string& path) {
   std::ofstream out(path);
-  if (!out) throw std::runtime_error(path + ": cannot write");
+  if (!out) throw std::runtime_error(path + ": cannot write (" + std::strerror(errno) + ")");
   const double w = d.hi_x - d.lo_x, h = d.hi_y - d.lo_y;
   const double px = 900, py = std::max(100.0, 900 * h / std::max(w, 1e-12));
   out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << num(px) << "\" height=\"" << num(py)
@@ -88,7 +101,8 @@ void svg_write(const SvgDocument2D& d, const std::string& path) {
       << num(h) << "\" fill=\"white\"/>\n<g transform=\"scale(1,-1)\">\n";
   for (const auto& item : d.items) out << item << "\n";
   out << "</g>\n</svg>\n";
-  if (!out) throw std::runtime_error(path + ": cannot write");
+  out.close();
+  if (!out) throw std::runtime_error(path + ": cannot write (" + std::strerror(errno) + ")");
 }
 
 std::string svg_colour(int i) {

@@ -1,19 +1,24 @@
 #include "io/vtp_2d.hpp"
 
+#include "io/vtk_quiet.hpp"
+
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
+#include <vtkErrorCode.h>
 #include <vtkIntArray.h>
 #include <vtkNew.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkXMLPolyDataWriter.h>
 
+#include <cstring>
 #include <stdexcept>
 
 namespace exactvis {
 
 void write_vtp_2d(const std::string& path, const VtpCells2D& c) {
   vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();  // coordinates beyond float's range stay finite
   vtkNew<vtkCellArray> polys, lines;
   vtkNew<vtkIntArray> value, kind;
   value->SetName("value");
@@ -46,10 +51,20 @@ void write_vtp_2d(const std::string& path, const VtpCells2D& c) {
   pd->SetPolys(polys);
   pd->GetCellData()->AddArray(value);
   pd->GetCellData()->AddArray(kind);
+  QuietVtk quiet;
   vtkNew<vtkXMLPolyDataWriter> w;
   w->SetFileName(path.c_str());
   w->SetInputData(pd);
-  if (w->Write() != 1) throw std::runtime_error(path + ": cannot write");
+  // Write() returns 1 even when the file could not be written; the error code tells.
+  if (w->Write() != 1 || w->GetErrorCode() != 0) {
+    const unsigned long code = w->GetErrorCode();
+    // Codes below FirstVTKErrorCode are errno values (VTK passes system errors through).
+    const std::string why = code < vtkErrorCode::FirstVTKErrorCode        ? std::string(std::strerror(static_cast<int>(code)))
+                            : code == vtkErrorCode::OutOfDiskSpaceError  ? "out of disk space"
+                            : code == vtkErrorCode::CannotOpenFileError ? "cannot open the file"
+                                                                        : "VTK error " + std::to_string(code);
+    throw std::runtime_error(path + ": cannot write (" + why + ")");
+  }
 }
 
 }  // namespace exactvis

@@ -14,8 +14,9 @@ struct VtpCells2D {
 };
 
 // Writes polygons (each ring as its own polygon cell; holes get value -1) and lines, with an integer cell
-// array "value" and a cell array "kind" (0 polygon ring, 1 hole ring, 2 line). Throws std::runtime_error
-// ("PATH: cannot write") on failure.
+// array "value" and a cell array "kind" (0 polygon ring, 1 hole ring, 2 line); points as doubles. Writes
+// `path` itself (whole-or-nothing output: write it through OutputFiles or write_atomically, io/atomic_file).
+// Throws std::runtime_error ("PATH: cannot write (VTK's error)") on failure; VTK's own log stays silent.
 void write_vtp_2d(const std::string& path, const VtpCells2D& cells);
 
 }  // namespace exactvis

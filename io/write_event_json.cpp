@@ -5,49 +5,17 @@
 namespace exactvis {
 namespace {
 
-const char* cause_name(EventEnd::Cause c) {
-  switch (c) {
-    case EventEnd::Cause::EdgeEndpoint: return "edge_endpoint";
-    case EventEnd::Cause::Occluder: return "occluder";
-    case EventEnd::Cause::Tangency: return "tangency";
-    case EventEnd::Cause::EndObjectChange: return "end_object_change";
-  }
-  return "?";
-}
-
-const char* feature_name(OccluderFeature::Kind k) {
-  switch (k) {
-    case OccluderFeature::Kind::Vertex: return "vertex";
-    case OccluderFeature::Kind::Edge: return "edge";
-    case OccluderFeature::Kind::Face: return "face";
-    case OccluderFeature::Kind::WedgeSide: return "wedge_side";
-  }
-  return "?";
-}
-
-const char* eee_cause_name(EeeEnd::Cause c) {
-  switch (c) {
-    case EeeEnd::Cause::EdgeEndpoint: return "edge_endpoint";
-    case EeeEnd::Cause::Occluder: return "occluder";
-    case EeeEnd::Cause::Tangency: return "tangency";
-    case EeeEnd::Cause::Singular: return "singular";
-  }
-  return "?";
-}
-
 bool is_rational(const RootNumber& x) { return !x.is_extended() || CGAL::is_zero(x.a1()); }
 
-nlohmann::json point_json(const Vec3<Exact>& p) { return {exact_to_json(p.x), exact_to_json(p.y), exact_to_json(p.z)}; }
-
-nlohmann::json eee_end_to_json(const Scene& scene, const EeeEvent& ev, const RootNumber& t, const EeeEnd& end) {
+nlohmann::json eee_end_to_json(const Scene& scene, const EeeEvent& ev, const RootNumber& t, const CriticalEnd& end) {
   nlohmann::json j;
   j["t"] = root_number_to_json(t);
   j["t_approx"] = CGAL::to_double(t);
-  j["cause"] = eee_cause_name(end.cause);
-  if (end.edge >= 0) j["generator"] = end.edge;
+  j["cause"] = cause_name(end.cause);
+  if (end.generator >= 0) j["generator"] = end.generator;
   if (end.vertex >= 0) j["vertex"] = end.vertex;
   if (end.triangle >= 0) j["triangle"] = end.triangle;
-  if (end.cause == EeeEnd::Cause::Occluder)
+  if (end.cause == CriticalEnd::Cause::Occluder)
     j["feature"] = {{"kind", feature_name(end.feature.kind)}, {"vertices", end.feature.ids}};
   // The end line exactly (coordinates in the field of t): its point on E1 and that point plus its direction,
   // and its points on the other two generators' lines (null where it is parallel to that line).
@@ -60,10 +28,21 @@ nlohmann::json eee_end_to_json(const Scene& scene, const EeeEvent& ev, const Roo
   j["line"] = {{"through", {point(line.on_e1), point(second)}},
                {"on_generators", {point(line.on_e1), line.on_e2 ? point(*line.on_e2) : nlohmann::json(nullptr),
                                   line.on_e3 ? point(*line.on_e3) : nlohmann::json(nullptr)}}};
+  j["key"] = extremal_line_key_to_json(end.line);
   return j;
 }
 
 }  // namespace
+
+nlohmann::json extremal_line_key_to_json(const ExtremalLineKey& key) {
+  nlohmann::json vertices = nlohmann::json::array(), edges = nlohmann::json::array(), faces = nlohmann::json::array();
+  for (int i = 0; i < key.vertex_count(); ++i) vertices.push_back(key.vertices[i]);
+  for (int i = 0; i < key.edge_count(); ++i) edges.push_back({key.edges[i][0], key.edges[i][1]});
+  for (int i = 0; i < key.face_count(); ++i) faces.push_back(key.faces[i]);
+  nlohmann::json j = {{"kind", kind_name(key.kind)}, {"vertices", vertices}, {"edges", edges}, {"faces", faces}};
+  if (key.kind == ExtremalLineKind::EEEE) j["branch"] = key.branch;
+  return j;
+}
 
 nlohmann::json root_number_to_json(const RootNumber& x) {
   if (is_rational(x)) return exact_to_json(x.a0());
@@ -91,8 +70,8 @@ nlohmann::json eee_events_to_json(const Scene& scene, const EeeResult& result) {
                          {"t0", root_number_to_json(i.t0)},
                          {"t1", root_number_to_json(i.t1)},
                          {"sample_t", exact_to_json(i.sample_t)},
-                         {"front", object_of(i.end_object_front)},
-                         {"back", object_of(i.end_object_back)}});
+                         {"front", object_of(i.front_object)},
+                         {"back", object_of(i.back_object)}});
     }
     e["intervals"] = iv;
     e["intervals_approx"] = approx;
@@ -103,18 +82,20 @@ nlohmann::json eee_events_to_json(const Scene& scene, const EeeResult& result) {
   return events;
 }
 
-nlohmann::json event_end_to_json(const Scene& scene, const EvEvent& ev, const Exact& t, const EventEnd& end) {
+nlohmann::json event_end_to_json(const Scene& scene, const EvEvent& ev, const RootNumber& t_root, const CriticalEnd& end) {
+  const Exact t = rational_parameter(t_root);
   nlohmann::json j;
   j["t"] = exact_to_json(t);
   j["t_approx"] = CGAL::to_double(t);
   j["cause"] = cause_name(end.cause);
   if (end.triangle >= 0) j["triangle"] = end.triangle;
-  if (end.cause == EventEnd::Cause::Occluder)
+  if (end.cause == CriticalEnd::Cause::Occluder)
     j["feature"] = {{"kind", feature_name(end.feature.kind)}, {"vertices", end.feature.ids}};
   const Point3& v = scene.vertices[ev.vertex];
   const Vec3<Exact> p = ev_edge_point(scene, ev.edge, t);
   j["line"] = {{"through",
                 {{v.x, v.y, v.z}, {exact_to_json(p.x), exact_to_json(p.y), exact_to_json(p.z)}}}};
+  j["key"] = extremal_line_key_to_json(end.line);
   return j;
 }
 
@@ -136,18 +117,18 @@ nlohmann::json ev_events_to_json(const Scene& scene, const EvResult& result) {
     // the end objects change are re-joined here, and listed one by one in "segment_ends".
     std::size_t first = 0;
     for (std::size_t k = 0; k < ev.intervals.size(); ++k) {
-      const EvInterval& i = ev.intervals[k];
+      const CriticalInterval& i = ev.intervals[k];
       objects.push_back({{"interval", iv.size()},
-                         {"t0", exact_to_json(i.t0)},
-                         {"t1", exact_to_json(i.t1)},
+                         {"t0", root_number_to_json(i.t0)},
+                         {"t1", root_number_to_json(i.t1)},
                          {"sample_t", exact_to_json(i.sample_t)},
-                         {"beyond_edge", object_of(i.beyond_edge)},
-                         {"behind_vertex", object_of(i.behind_vertex)}});
+                         {"beyond_edge", object_of(i.front_object)},
+                         {"behind_vertex", object_of(i.back_object)}});
       const bool continues = k + 1 < ev.intervals.size() &&
-                             i.end1.cause == EventEnd::Cause::EndObjectChange && i.t1 == ev.intervals[k + 1].t0;
+                             i.end1.cause == CriticalEnd::Cause::EndObjectChange && i.t1 == ev.intervals[k + 1].t0;
       if (continues) continue;
-      const EvInterval& f = ev.intervals[first];
-      iv.push_back({exact_to_json(f.t0), exact_to_json(i.t1)});
+      const CriticalInterval& f = ev.intervals[first];
+      iv.push_back({root_number_to_json(f.t0), root_number_to_json(i.t1)});
       approx.push_back({CGAL::to_double(f.t0), CGAL::to_double(i.t1)});
       ends.push_back({event_end_to_json(scene, ev, f.t0, f.end0), event_end_to_json(scene, ev, i.t1, i.end1)});
       first = k + 1;

@@ -1,13 +1,7 @@
 #pragma once
-// Event surfaces as VTK XML PolyData (.vtp) for ParaView (docs/cli.md "events").
-//
-// For each free interval of each event, the surface swept by the lines' *maximal free segments*: at a
-// parameter t the segment runs from the first scene triangle hit behind the generators (or the scene box when
-// the line leaves the scene) through the generators to the first triangle hit beyond them (or the box).
-// EV: from behind V to beyond E; EEE: from beyond the one outer generator to beyond the other. The surface is
-// a triangulated strip between these segments at `samples_per_interval + 1` rational parameters across the
-// interval (the ends themselves when rational, else rationals just inside them). Hits are exact
-// (events/ray_first_hit.hpp); coordinates are double approximations (display only).
+// Event surfaces as VTK XML PolyData (.vtp) for ParaView (docs/cli.md "events"): the strips of
+// events/event_surfaces.hpp (swept maximal free segments, exact hits, double coordinates for display),
+// triangulated, two triangles per pair of consecutive samples.
 #include "events/eee_enumeration.hpp"
 #include "events/ev_events.hpp"
 

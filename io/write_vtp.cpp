@@ -1,6 +1,7 @@
 #include "io/write_vtp.hpp"
 
 #include "io/atomic_file.hpp"
+#include "io/vtk_quiet.hpp"
 
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
@@ -39,6 +40,7 @@ void add_arrays(vtkPolyData* poly, const CellArrays& arrays, std::size_t cells, 
 
 void write_poly(const std::string& path, vtkPolyData* poly) {
   write_atomically(path, [&](const std::string& temp) {
+    QuietVtk quiet;  // a failure is reported by write_atomically, as one line
     vtkNew<vtkXMLPolyDataWriter> writer;
     writer->SetFileName(temp.c_str());
     writer->SetInputData(poly);

@@ -1,5 +1,7 @@
 #include "kernel/number_types.hpp"
 
+#include <cerrno>
+#include <cstdlib>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -45,14 +47,13 @@ Exact parse_rational(const std::string& text) {
     mpq_clear(q);
     return r;
   }
-  size_t used = 0;
-  double v = 0;
-  try {
-    v = std::stod(text, &used);
-  } catch (const std::exception&) {
-    throw std::invalid_argument("not a number: '" + text + "'");
-  }
-  if (used != text.size()) throw std::invalid_argument("not a number: '" + text + "'");
+  // strtod, not stod: a result that underflows (a subnormal double, or zero) is a number (ERANGE is only an
+  // error on overflow). Leading white space is skipped (as stod does), trailing characters are refused.
+  errno = 0;
+  char* end = nullptr;
+  const double v = std::strtod(text.c_str(), &end);
+  if (end != text.c_str() + text.size()) throw std::invalid_argument("not a number: '" + text + "'");
+  if (errno == ERANGE && std::isinf(v)) throw std::invalid_argument("not a number: '" + text + "'");
   if (!std::isfinite(v)) throw std::invalid_argument("non-finite number: '" + text + "'");
   return Exact(v);
 }

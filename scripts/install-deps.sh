@@ -6,8 +6,9 @@ set -euo pipefail
 packages=(
   cmake ninja-build g++ ccache
   libcgal-dev libgmp-dev libmpfr-dev libboost-dev libeigen3-dev
-  libvtk9-dev libglm-dev libopenmesh-dev libtbb-dev
+  libvtk9-dev libglm-dev libopenmesh-dev libtbb-dev libembree-dev
   nlohmann-json3-dev libcli11-dev libgtest-dev
+  libzip-dev          # reading Quake 3 .pk3 archives (io/zip_archive)
   assimp-testmodels   # broken model files the bad-input tests use
 )
 

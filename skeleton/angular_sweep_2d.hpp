@@ -7,7 +7,7 @@
 // Between two event directions the edges met by the ray do not change order (edges are disjoint), so a
 // std::set ordered by distance along the ray holds them (Lee's visibility-graph sweep).
 // Cost: O(n log n) for n vertices. Exact (filtered predicates only).
-#include "skeleton/scene2d.hpp"
+#include "planar/scene2d.hpp"
 
 #include <vector>
 

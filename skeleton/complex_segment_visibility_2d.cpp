@@ -12,8 +12,9 @@ SegmentVisibility2D segment_visibility_in_complex(const ComplexWalkIndex2D& inde
   require_free_segment(scene, t0, t1, "segment T");
   ComplexSegmentStats2D st;
   SegmentVisibility2D out;
-  // a frame containing S and T strictly (the polygons are clipped by it)
-  const Scene2D framed = with_frame_around(scene, {s0, s1, t0, t1}, 0.5);
+  // a frame containing S and T strictly (the polygons are clipped by it); any such frame gives the same
+  // answer (segments from S to T stay inside it), so margin 0 serves scenes too large for margin 0.5
+  const Scene2D framed = with_frame_around(scene, {s0, s1, t0, t1}, frame_box(scene, 0.5).representable ? 0.5 : 0.0);
   for (const Point2* p : {&s0, &s1, &t0, &t1})
     if (!frame_contains(framed, *p)) throw std::invalid_argument("segments too far from the scene for a frame");
   // sigmas: S meets the line through two vertices seeing each other (strict pairs, ring edges) or through

@@ -16,7 +16,7 @@
 // tangent family holding that direction, whose own edges are then scanned).
 // Every decision is an exact filtered predicate; the result is vertex for vertex equal to
 // visibility_polygon(with_frame(scene), q) (tested).
-#include "skeleton/point_location_2d.hpp"
+#include "planar/point_location_2d.hpp"
 #include "skeleton/visibility_complex_2d.hpp"
 #include "skeleton/visibility_polygon_2d.hpp"
 

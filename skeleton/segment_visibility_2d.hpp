@@ -1,6 +1,6 @@
 #pragma once
 // Segment-to-segment (from-region) visibility in the plane, exact, with a witness.
-#include "skeleton/scene2d.hpp"
+#include "planar/scene2d.hpp"
 
 #include <optional>
 #include <stdexcept>

@@ -2,6 +2,7 @@
 
 #include "skeleton/angular_sweep_2d.hpp"
 #include "skeleton/rotational_visibility_2d.hpp"
+#include "util/union_find.hpp"
 
 #include <tbb/parallel_for.h>
 
@@ -75,13 +76,6 @@ struct Event {
   int bitangent;
   bool at_a;      // the pivot is endpoint a of the bitangent
   Point2 rep;     // representative direction point: pivot + rep direction (within the pivot's range)
-};
-
-struct UnionFind {
-  std::vector<int> p;
-  int add() { p.push_back(static_cast<int>(p.size())); return p.back(); }
-  int find(int x) { while (p[x] != x) x = p[x] = p[p[x]]; return x; }
-  void unite(int a, int b) { p[find(a)] = find(b); }
 };
 
 // Object met by the segments near a bitangent's line beyond its endpoint a when the line continues along an
@@ -310,7 +304,7 @@ VisibilityComplex2D visibility_complex(const Scene2D& s, void (*progress)(double
   }
   // Each slot carries the (sorted) pair of objects at the ends of its segments: vertex slots from the
   // bitangent's line (A, Oa, Ob, B), edge slots from their sample segment. Glued slots must agree.
-  std::vector<std::optional<std::array<int, 2>>> pair_of(uf.p.size());
+  std::vector<std::optional<std::array<int, 2>>> pair_of(uf.size());
   auto sorted = [](int x, int y) { return x < y ? std::array<int, 2>{x, y} : std::array<int, 2>{y, x}; };
   for (std::size_t i = 0; i < B.size(); ++i) {
     // an empty extension (the line continues along an edge of the endpoint) does not name the object

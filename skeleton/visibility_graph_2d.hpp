@@ -11,7 +11,7 @@
 // - Its maximal free segment extends the segment beyond each endpoint to the first boundary point met
 //   (a vertex, an edge interior, or infinity); if an edge of the endpoint continues the line, the
 //   extension on that side is empty and ends at the endpoint itself.
-#include "skeleton/scene2d.hpp"
+#include "planar/scene2d.hpp"
 
 #include <string>
 #include <utility>

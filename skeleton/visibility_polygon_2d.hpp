@@ -1,6 +1,6 @@
 #pragma once
 // Visibility polygon of a point in a bounded 2D scene, and the set of edges it sees.
-#include "skeleton/scene2d.hpp"
+#include "planar/scene2d.hpp"
 
 #include <vector>
 

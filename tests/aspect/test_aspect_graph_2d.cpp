@@ -1,6 +1,6 @@
 // The 2D aspect graph checked by sampling viewpoints with the brute-force oracle: the same aspect everywhere
 // inside a region, a different aspect across every region boundary.
-#include "../skeleton/scene2d_test_util.hpp"
+#include "tests/planar/scene2d_test_util.hpp"
 #include "aspect/aspect_graph_2d.hpp"
 
 #include <gtest/gtest.h>
@@ -120,4 +120,36 @@ TEST(AspectGraph2D, RandomGridScenes) {
     check_scene(polys, rng, 150);
   }
   EXPECT_GE(tested, 3);
+}
+
+// Coordinates whose squares or cubes overflow doubles (the interval approximations CGAL's lazy kernel made of
+// the arrangement's line intersections overflowed there: aspect2d crashed from ~1e102 on). Exact inputs are
+// handled exactly: the oracle agrees, and scaling a scene by a power of two (exact) changes nothing but the
+// coordinates.
+TEST(AspectGraph2D, HugeCoordinates) {
+  std::mt19937_64 rng(5);
+  const double k = std::ldexp(1.0, 500);  // about 3.3e150
+  check_scene({{{box(0, 0, k, k)}}, {{box(3 * k, 0.5 * k, 4 * k, 2 * k)}}}, rng, 200);
+  check_scene({{{{{0, 0}, {1e308, 0}, {0, 1}}}}, {{box(-4, 2, -2, 3)}}}, rng, 200);
+  // Scaling by 2^k: the frame (margin 1/4 of 8 = 2, integer corners) scales too, so the partition must be
+  // the same up to the scale, region by region.
+  for (int e : {400, 1000}) {
+    const double f = std::ldexp(1.0, e);
+    const Scene2D small = make_scene2d(to_input({{{box(0, 0, 2, 2)}}, {{box(4, 1, 8, 8)}}, {{box(0, 5, 2, 6)}}}));
+    const Scene2D big =
+        make_scene2d(to_input({{{box(0, 0, 2 * f, 2 * f)}}, {{box(4 * f, f, 8 * f, 8 * f)}}, {{box(0, 5 * f, 2 * f, 6 * f)}}}));
+    const AspectGraph2D a = aspect_graph(small, 0.25), b = aspect_graph(big, 0.25);
+    ASSERT_EQ(a.faces.size(), b.faces.size()) << e;
+    ASSERT_EQ(a.regions.size(), b.regions.size()) << e;
+    EXPECT_EQ(a.adjacency, b.adjacency) << e;
+    for (std::size_t r = 0; r < a.regions.size(); ++r) EXPECT_EQ(a.regions[r].aspect, b.regions[r].aspect) << e;
+    const Exact scale(f);
+    for (std::size_t i = 0; i < a.faces.size(); ++i) {
+      ASSERT_EQ(a.faces[i].outer.size(), b.faces[i].outer.size());
+      for (std::size_t j = 0; j < a.faces[i].outer.size(); ++j) {
+        EXPECT_EQ(a.faces[i].outer[j].x * scale, b.faces[i].outer[j].x);
+        EXPECT_EQ(a.faces[i].outer[j].y * scale, b.faces[i].outer[j].y);
+      }
+    }
+  }
 }

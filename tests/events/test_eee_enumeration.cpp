@@ -3,7 +3,7 @@
 // light; the edge-rule prefilter is checked against exact sampling with GMP rationals (no shared code).
 #include "events/eee_enumeration.hpp"
 #include "events/eee_prefilter.hpp"
-#include "events/occluder_index.hpp"
+#include "kernel/triangle_index.hpp"
 #include "kernel/predicates.hpp"
 #include "kernel/scene_generators.hpp"
 #include "tests/events/event_test_scenes.hpp"
@@ -32,7 +32,7 @@ std::string describe(const EeeEvent& ev) {
 // All triples (with a light edge when `light` is non-empty) through eee_event, no restriction at all.
 std::vector<std::string> all_triples(const Scene& s, const std::vector<int>& light) {
   const SceneAdjacency adj = build_scene_adjacency(s);
-  const OccluderIndex index(s);
+  const TriangleIndex index(s);
   std::set<int> light_edges;
   for (int ti : light)
     for (int k = 0; k < 3; ++k)

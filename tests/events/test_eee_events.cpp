@@ -1,10 +1,9 @@
 // EEE events against the brute-force oracle (tests/events/eee_oracle.hpp), exact re-checks of every reported
 // end line, and hand cases with known answers (a hyperbolic paraboloid's rulings, a regulus occluder, a cube).
 #include "events/eee_events.hpp"
-#include "events/occluder_index.hpp"
 #include "kernel/predicates.hpp"
 #include "kernel/rational_between.hpp"
-#include "kernel/spatial_index.hpp"
+#include "kernel/triangle_index.hpp"
 #include "tests/events/eee_oracle.hpp"
 #include "tests/events/event_test_scenes.hpp"
 
@@ -57,7 +56,7 @@ bool zero3(const Vec3<RootNumber>& v) { return CGAL::is_zero(v.x) && CGAL::is_ze
 Vec3<RootNumber> rn(const Point3& p) { return {RootNumber(Exact(p.x)), RootNumber(Exact(p.y)), RootNumber(Exact(p.z))}; }
 
 // Exact re-check of an end: its line meets the three edge lines and the named feature.
-void recheck_end(const Scene& s, const EeeEvent& ev, const RootNumber& t, const EeeEnd& end, const std::string& what) {
+void recheck_end(const Scene& s, const EeeEvent& ev, const RootNumber& t, const CriticalEnd& end, const std::string& what) {
   const EeeLinePoints lp = eee_line_points(s, ev, t);
   ASSERT_FALSE(zero3(lp.direction)) << what;
   auto on_line = [&](const Vec3<RootNumber>& x) { return zero3(cross(x - lp.on_e1, lp.direction)); };
@@ -73,19 +72,19 @@ void recheck_end(const Scene& s, const EeeEvent& ev, const RootNumber& t, const 
     EXPECT_TRUE(on_line(*q)) << what;
   }
   switch (end.cause) {
-    case EeeEnd::Cause::EdgeEndpoint: {
-      ASSERT_GE(end.edge, 0);
-      const auto q = end.edge == 0 ? std::optional(lp.on_e1) : (end.edge == 1 ? lp.on_e2 : lp.on_e3);
+    case CriticalEnd::Cause::EdgeEndpoint: {
+      ASSERT_GE(end.generator, 0);
+      const auto q = end.generator == 0 ? std::optional(lp.on_e1) : (end.generator == 1 ? lp.on_e2 : lp.on_e3);
       ASSERT_TRUE(q.has_value()) << what;
       EXPECT_TRUE(zero3(*q - rn(s.vertices[end.vertex]))) << what << ": EdgeEndpoint not through the vertex";
       break;
     }
-    case EeeEnd::Cause::Singular: {
-      ASSERT_TRUE(end.edge == 1 || end.edge == 2) << what;
-      EXPECT_FALSE((end.edge == 1 ? lp.on_e2 : lp.on_e3).has_value()) << what << ": Singular end not parallel";
+    case CriticalEnd::Cause::Singular: {
+      ASSERT_TRUE(end.generator == 1 || end.generator == 2) << what;
+      EXPECT_FALSE((end.generator == 1 ? lp.on_e2 : lp.on_e3).has_value()) << what << ": Singular end not parallel";
       break;
     }
-    case EeeEnd::Cause::Tangency: {
+    case CriticalEnd::Cause::Tangency: {
       const auto& tr = s.triangles[s.index_of_id(end.triangle)];
       const Vec3<RootNumber> c0 = rn(s.corner(tr, 0)), c1 = rn(s.corner(tr, 1)), c2 = rn(s.corner(tr, 2));
       const Vec3<RootNumber> n = cross(c1 - c0, c2 - c0);
@@ -93,7 +92,7 @@ void recheck_end(const Scene& s, const EeeEvent& ev, const RootNumber& t, const 
           << what << ": Tangency end line not in the face plane";
       break;
     }
-    case EeeEnd::Cause::Occluder: {
+    case CriticalEnd::Cause::Occluder: {
       const auto& tr = s.triangles[s.index_of_id(end.triangle)];
       const auto& f = end.feature;
       if (f.kind == OccluderFeature::Kind::Vertex) {
@@ -117,6 +116,9 @@ void recheck_end(const Scene& s, const EeeEvent& ev, const RootNumber& t, const 
       }
       break;
     }
+    case CriticalEnd::Cause::EndObjectChange:
+      ADD_FAILURE() << what << ": an EEE interval ends at an end-object change (EV only)";
+      break;
   }
 }
 
@@ -235,21 +237,22 @@ struct CheckCounts {
   }
 };
 
-std::string cause_name(const EeeEnd& e) {
+std::string cause_name(const CriticalEnd& e) {
   switch (e.cause) {
-    case EeeEnd::Cause::EdgeEndpoint: return e.edge == 0 ? "endpoint-E1" : "endpoint-E2/E3";
-    case EeeEnd::Cause::Tangency: return "tangency";
-    case EeeEnd::Cause::Singular: return "singular";
-    case EeeEnd::Cause::Occluder:
+    case CriticalEnd::Cause::EdgeEndpoint: return e.generator == 0 ? "endpoint-E1" : "endpoint-E2/E3";
+    case CriticalEnd::Cause::Tangency: return "tangency";
+    case CriticalEnd::Cause::Singular: return "singular";
+    case CriticalEnd::Cause::Occluder:
       return e.feature.kind == OccluderFeature::Kind::Vertex ? "occluder-vertex"
              : e.feature.kind == OccluderFeature::Kind::Edge ? "occluder-edge"
                                                               : "occluder-face";
+    case CriticalEnd::Cause::EndObjectChange: return "end-object-change";
   }
   return "?";
 }
 
 // Compares eee_event for one triple with the oracle at many rational samples, and re-checks every end.
-void check_triple(const Scene& s, const SceneAdjacency& adj, const OccluderIndex& index,
+void check_triple(const Scene& s, const SceneAdjacency& adj, const TriangleIndex& index,
                   const ev_oracle::Mesh& m, int i, int j, int k, int grid, std::mt19937& rng, CheckCounts& counts,
                   const std::string& what) {
   const auto start = std::chrono::steady_clock::now();
@@ -325,7 +328,7 @@ bool share_vertex(const SceneAdjacency& adj, int i, int j) {
 // Every triple of a scene (or a random subset of `limit` triples), compared with the oracle.
 CheckCounts check_scene(const Scene& s, const std::string& what, int limit, int grid, unsigned seed) {
   const SceneAdjacency adj = build_scene_adjacency(s);
-  const OccluderIndex index(s);
+  const TriangleIndex index(s);
   const ev_oracle::Mesh m = to_oracle(s);
   std::mt19937 rng(seed);
   std::vector<std::array<int, 3>> triples, excluded;
@@ -379,7 +382,7 @@ struct Paraboloid {
   // The EEE event of the three paraboloid edges (0, 1), (3, 4), (6, 7) in scene s (built from this).
   static std::optional<EeeEvent> event(const Scene& s) {
     const SceneAdjacency adj = build_scene_adjacency(s);
-    const OccluderIndex index(s);
+    const TriangleIndex index(s);
     return eee_event(s, adj, index, adj.edge_index(0, 1), adj.edge_index(3, 4), adj.edge_index(6, 7));
   }
 };
@@ -388,20 +391,20 @@ TEST(EeeEvents, ParaboloidFreeEverywhere) {
   const Paraboloid p;
   const Scene s = make_scene(p.v, p.t);
   const SceneAdjacency adj = build_scene_adjacency(s);
-  const OccluderIndex index(s);
+  const TriangleIndex index(s);
   const int e1 = adj.edge_index(0, 1), e2 = adj.edge_index(3, 4), e3 = adj.edge_index(6, 7);
   const auto ev = eee_event(s, adj, index, e3, e1, e2);  // any order
   ASSERT_TRUE(ev.has_value());
   EXPECT_EQ(ev->edges[0], (std::array<int, 2>{0, 1}));
   ASSERT_EQ(ev->intervals.size(), 1u);
   EXPECT_TRUE(ev->intervals[0].t0 == RootNumber(0) && ev->intervals[0].t1 == RootNumber(1));
-  EXPECT_EQ(ev->intervals[0].end0.cause, EeeEnd::Cause::EdgeEndpoint);
+  EXPECT_EQ(ev->intervals[0].end0.cause, CriticalEnd::Cause::EdgeEndpoint);
   // End objects of the sample line: the ray beyond the outermost generators leaves the scene.
   EeeEvent copy = *ev;
-  const SpatialIndex spatial(s);
+  const TriangleIndex spatial(s);
   eee_segment_ends(s, spatial, bounding_box(s), copy);
-  EXPECT_EQ(copy.intervals[0].end_object_front, -1);
-  EXPECT_EQ(copy.intervals[0].end_object_back, -1);
+  EXPECT_EQ(copy.intervals[0].front_object, -1);
+  EXPECT_EQ(copy.intervals[0].back_object, -1);
   check_scene(s, "paraboloid", 0, 64, 1);
 }
 
@@ -418,7 +421,7 @@ TEST(EeeEvents, ParaboloidWithOccluder) {
   EXPECT_TRUE(ev->intervals[0].t1 == RootNumber(Exact(1, 2)));
   EXPECT_TRUE(ev->intervals[1].t0 == RootNumber(Exact(3, 4)));
   EXPECT_TRUE(ev->intervals[1].t1 == RootNumber(1));
-  EXPECT_EQ(ev->intervals[0].end1.cause, EeeEnd::Cause::Occluder);
+  EXPECT_EQ(ev->intervals[0].end1.cause, CriticalEnd::Cause::Occluder);
   EXPECT_EQ(ev->intervals[0].end1.triangle, 3);
   EXPECT_EQ(ev->intervals[0].end1.feature.kind, OccluderFeature::Kind::Edge);
   EXPECT_EQ(ev->intervals[1].end0.feature.kind, OccluderFeature::Kind::Vertex);
@@ -458,7 +461,7 @@ TEST(EeeEvents, OccluderInTheFamilysPlaneBlocksOneLine) {
   EXPECT_TRUE(ev->intervals[0].t1 == RootNumber(Exact(5, 8)));
   EXPECT_TRUE(ev->intervals[1].t0 == RootNumber(Exact(5, 8)));
   EXPECT_TRUE(ev->intervals[1].t1 == RootNumber(1));
-  EXPECT_EQ(ev->intervals[0].end1.cause, EeeEnd::Cause::Occluder);
+  EXPECT_EQ(ev->intervals[0].end1.cause, CriticalEnd::Cause::Occluder);
   EXPECT_EQ(ev->intervals[0].end1.triangle, 3);
   EXPECT_EQ(ev->intervals[1].end0.triangle, 3);
   check_scene(s, "coplanar occluder", 0, 64, 6);
@@ -666,7 +669,7 @@ TEST(EeeEvents, ParallelCallsAgreeWithSerial) {
   std::mt19937 rng(99);
   const Scene s = random_scene(rng, 0);
   const SceneAdjacency adj = build_scene_adjacency(s);
-  const OccluderIndex index(s);
+  const TriangleIndex index(s);
   const int ne = static_cast<int>(adj.edges.size());
   std::vector<std::array<int, 3>> triples;
   for (int i = 0; i < ne; ++i)

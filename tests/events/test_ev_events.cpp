@@ -1,6 +1,7 @@
 // EV events against the brute-force oracle (tests/events/ev_oracle.hpp) and hand-derived closed-mesh cases.
+#include "events/eee_events.hpp"
 #include "events/ev_events.hpp"
-#include "events/occluder_index.hpp"
+#include "kernel/triangle_index.hpp"
 #include "events/tangency.hpp"
 #include "kernel/predicates.hpp"
 #include "kernel/scene_generators.hpp"
@@ -40,7 +41,7 @@ std::set<int> closed_fan_vertices(const Scene& s) {
 // Compares every (vertex, edge) pair of the scene with the oracle; returns the number of events compared.
 int compare_with_oracle(const Scene& s, const std::string& what) {
   const SceneAdjacency adj = build_scene_adjacency(s);
-  const OccluderIndex index(s);
+  const TriangleIndex index(s);
   const ev_oracle::Mesh m = to_oracle(s);
   const std::set<int> closed = closed_fan_vertices(s);
   int events = 0;
@@ -54,7 +55,7 @@ int compare_with_oracle(const Scene& s, const std::string& what) {
       const auto want = ev_oracle::ev_intervals(m, v, e.v[0], e.v[1]);
       std::string g, w;
       if (got)
-        for (const auto& iv : got->intervals) g += "[" + to_rational_string(iv.t0) + "," + to_rational_string(iv.t1) + "]";
+        for (const auto& iv : got->intervals) g += "[" + root_number_to_string(iv.t0) + "," + root_number_to_string(iv.t1) + "]";
       for (const auto& iv : want) w += "[" + q_str(iv.t0) + "," + q_str(iv.t1) + "]";
       EXPECT_EQ(g, w) << what << " V=" << v << " E=(" << e.v[0] << "," << e.v[1] << ")";
       if (got) ++events;
@@ -154,7 +155,7 @@ TEST(EvEvents, CubeAboveFloorWithLight) {
 TEST(EvEvents, CubeCornerToFloorEdgeTangencyChange) {
   const Scene s = cube_floor_light();
   const SceneAdjacency adj = build_scene_adjacency(s);
-  const OccluderIndex index(s);
+  const TriangleIndex index(s);
   const VertexFan fan = build_vertex_fan(s, adj, 4);
   ASSERT_EQ(fan.cycles.size(), 1u);
   const auto ev = ev_event(s, adj, index, fan, adj.edge_index(10, 11));
@@ -163,7 +164,7 @@ TEST(EvEvents, CubeCornerToFloorEdgeTangencyChange) {
   EXPECT_EQ(ev->intervals[0].t0, Exact(1, 2));
   EXPECT_EQ(ev->intervals[0].t1, 1);
   // Both the fan rule and the face triangle (0,6,2) (not incident to the corner: an occluder) end it there.
-  EXPECT_NE(ev->intervals[0].end0.cause, EventEnd::Cause::EdgeEndpoint);
+  EXPECT_NE(ev->intervals[0].end0.cause, CriticalEnd::Cause::EdgeEndpoint);
   // The near edge y = -10 is fully visible and tangent.
   const auto near = ev_event(s, adj, index, fan, adj.edge_index(8, 9));
   ASSERT_TRUE(near);
@@ -241,14 +242,14 @@ TEST(EvEvents, SegmentEndsAgreeWithLinearScan) {
       const auto& B = s.vertices[ev.edge[1]];
       const ev_oracle::P3 OA{A.x, A.y, A.z}, OB{B.x, B.y, B.z};
       for (const auto& iv : ev.intervals) {
-        EXPECT_EQ(iv.sample_t, (iv.t0 + iv.t1) / 2);
+        EXPECT_EQ(RootNumber(iv.sample_t), (iv.t0 + iv.t1) / 2);
         const mpq_class ts(to_rational_string(iv.sample_t));
         const ev_oracle::P3 P = OA + ts * (OB - OA);
         const ev_oracle::P3 d = P - OV;
         for (int side = 0; side < 2; ++side) {
           const ev_oracle::P3 origin = side == 0 ? P : OV;
           const ev_oracle::P3 dir = side == 0 ? d : mpq_class(-1) * d;
-          const std::int64_t got = side == 0 ? iv.beyond_edge : iv.behind_vertex;
+          const std::int64_t got = side == 0 ? iv.front_object : iv.back_object;
           mpq_class best;
           const bool any = ev_oracle::first_entry(m, origin, dir, &best);
           ASSERT_EQ(got >= 0, any) << "seed " << seed << " V=" << ev.vertex << " side " << side;

@@ -42,16 +42,16 @@ TEST(EvIntervalSplit, EndObjectsConstantOnEachPieceAndPiecesRejoin) {
     for (std::size_t e = 0; e < split.events.size(); ++e) {
       const auto& ev = split.events[e];
       // Re-join pieces across EndObjectChange ends: the unsplit intervals.
-      std::vector<std::pair<Exact, Exact>> joined;
+      std::vector<std::pair<RootNumber, RootNumber>> joined;
       for (std::size_t i = 0; i < ev.intervals.size(); ++i) {
         const auto& iv = ev.intervals[i];
         EXPECT_LT(iv.t0, iv.t1);
-        if (iv.end0.cause == EventEnd::Cause::EndObjectChange) {
+        if (iv.end0.cause == CriticalEnd::Cause::EndObjectChange) {
           ASSERT_GT(i, 0u);
           const auto& prev = ev.intervals[i - 1];
           EXPECT_EQ(prev.t1, iv.t0);
-          EXPECT_EQ(prev.end1.cause, EventEnd::Cause::EndObjectChange);
-          EXPECT_TRUE(prev.beyond_edge != iv.beyond_edge || prev.behind_vertex != iv.behind_vertex);
+          EXPECT_EQ(prev.end1.cause, CriticalEnd::Cause::EndObjectChange);
+          EXPECT_TRUE(prev.front_object != iv.front_object || prev.back_object != iv.back_object);
           joined.back().second = iv.t1;
           ++splits;
         } else {
@@ -75,7 +75,7 @@ TEST(EvIntervalSplit, EndObjectsConstantOnEachPieceAndPiecesRejoin) {
           r.canonicalize();
           return r;
         };
-        const mpq_class t0 = q(iv.t0), t1 = q(iv.t1), ts = q(iv.sample_t);
+        const mpq_class t0 = q(rational_parameter(iv.t0)), t1 = q(rational_parameter(iv.t1)), ts = q(iv.sample_t);
         EXPECT_TRUE(ts > t0 && ts < t1);
         // Generic parameters (large prime denominator: not on the small-denominator breakpoints of these
         // small-integer scenes, where an isolated line may see a different object), near both ends and across.
@@ -87,8 +87,8 @@ TEST(EvIntervalSplit, EndObjectsConstantOnEachPieceAndPiecesRejoin) {
           const ev_oracle::P3 P = OA + t * (OB - OA);
           const ev_oracle::P3 d = P - OV;
           const std::string what = "seed " + std::to_string(seed) + " V=" + std::to_string(ev.vertex) + " t=" + t.get_str();
-          expect_first_hit(s, m, P, d, iv.beyond_edge, what + " beyond");
-          expect_first_hit(s, m, OV, mpq_class(-1) * d, iv.behind_vertex, what + " behind");
+          expect_first_hit(s, m, P, d, iv.front_object, what + " beyond");
+          expect_first_hit(s, m, OV, mpq_class(-1) * d, iv.back_object, what + " behind");
         }
         ++pieces_checked;
       }
@@ -116,9 +116,9 @@ TEST(EvIntervalSplit, FloorDiagonalSplitsTheWedge) {
   EXPECT_EQ(found->intervals[0].t0, 0);
   EXPECT_EQ(found->intervals[0].t1, Exact(3, 4));
   EXPECT_EQ(found->intervals[1].t1, 1);
-  EXPECT_EQ(found->intervals[0].end1.cause, EventEnd::Cause::EndObjectChange);
-  EXPECT_EQ(found->intervals[0].beyond_edge, 1);  // (0, 2, 3): y > x
-  EXPECT_EQ(found->intervals[1].beyond_edge, 0);  // (0, 1, 2): y < x
+  EXPECT_EQ(found->intervals[0].end1.cause, CriticalEnd::Cause::EndObjectChange);
+  EXPECT_EQ(found->intervals[0].front_object, 1);  // (0, 2, 3): y > x
+  EXPECT_EQ(found->intervals[1].front_object, 0);  // (0, 1, 2): y < x
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 // umbra/penumbra wedges of a cube under a light reach the floor (clipped at the first blocker).
 #include "events/eee_enumeration.hpp"
 #include "events/ev_events.hpp"
+#include "events/event_surfaces.hpp"
 #include "io/write_event_surfaces.hpp"
 
 #include <gtest/gtest.h>
@@ -13,6 +14,7 @@
 #include <vtkXMLPolyDataReader.h>
 
 #include <filesystem>
+#include <cmath>
 #include <map>
 
 namespace exactvis {
@@ -99,6 +101,44 @@ TEST(EventSurfaces, WrittenAndReadBackWithArrays) {
   }
   EXPECT_EQ(wedges, 16);
   std::filesystem::remove(path);
+}
+
+// The geometry itself (events/event_surfaces.hpp): one surface per interval, samples in increasing t inside
+// the interval, and the wedges of the light's vertices over the cube's top edges hit the floor (triangles 12,
+// 13) at z = -1; segments that leave the scene end on its box.
+TEST(EventSurfaces, SweptSegmentsEndOnTheTrianglesHit) {
+  const Scene s = cube_floor_light();
+  EvOptions ev_opt;
+  ev_opt.light_triangles = {14, 15};
+  const EvResult ev = enumerate_ev_events(s, ev_opt);
+  const std::vector<EventSurface> surfaces = event_surfaces(s, ev, EeeResult{}, 4);
+  std::size_t intervals = 0;
+  for (const auto& e : ev.events) intervals += e.intervals.size();
+  ASSERT_EQ(surfaces.size(), intervals);
+  int floor_hits = 0;
+  for (const EventSurface& surface : surfaces) {
+    ASSERT_EQ(surface.kind, EventSurface::Kind::EV);
+    const auto& e = ev.events[surface.event];
+    const auto& iv = e.intervals[surface.interval];
+    ASSERT_EQ(surface.samples.size(), 5u);
+    for (std::size_t k = 0; k < surface.samples.size(); ++k) {
+      const SurfaceSample& smp = surface.samples[k];
+      EXPECT_TRUE(iv.t0 <= RootNumber(smp.t) && RootNumber(smp.t) <= iv.t1);
+      if (k > 0) {
+        EXPECT_LT(surface.samples[k - 1].t, smp.t);
+      }
+      if (smp.front_triangle == 12 || smp.front_triangle == 13) {
+        ++floor_hits;
+        EXPECT_EQ(smp.front.z, -1.0);  // the exact hit point on the floor, rounded: exactly -1
+      }
+      if (smp.front_triangle < 0) {  // left the box: on its boundary
+        const bool on_box = std::abs(smp.front.x) == 10 || std::abs(smp.front.y) == 10 || smp.front.z == -1 ||
+                            smp.front.z == 6;
+        EXPECT_TRUE(on_box) << smp.front.x << " " << smp.front.y << " " << smp.front.z;
+      }
+    }
+  }
+  EXPECT_GT(floor_hits, 16 * 5 - 1);
 }
 
 // EEE ruled strips: three skew bars (as in test_events_cli.cpp); every EEE interval gives 2 n triangles of

@@ -1,5 +1,7 @@
 // The `exactvis events` subcommand end to end: JSON shape, light selection, .vtp output, bad input.
 #include <gtest/gtest.h>
+
+#include <algorithm>
 #include <nlohmann/json.hpp>
 
 #include <array>
@@ -59,6 +61,11 @@ TEST(EventsCli, LightRestrictedJson) {
     EXPECT_EQ(iv[0][1], 1);
     EXPECT_EQ(e["ends"][0][0]["cause"], "edge_endpoint");
     EXPECT_NE(e["ends"][0][1]["cause"], "end_object_change");
+    // The key of the t = 0 end: the VV line through V and the edge's first vertex.
+    EXPECT_EQ(e["ends"][0][0]["key"],
+              (nlohmann::json{{"kind", "VV"}, {"vertices", {std::min(e["vertex"].get<int>(), e["edge"][0].get<int>()),
+                                                            std::max(e["vertex"].get<int>(), e["edge"][0].get<int>())}},
+                              {"edges", nlohmann::json::array()}, {"faces", nlohmann::json::array()}}));
     const auto& pieces = e["segment_ends"];
     ASSERT_GE(pieces.size(), 1u);
     EXPECT_EQ(pieces[0]["t0"], 0);
@@ -140,6 +147,11 @@ TEST(EventsCli, EeeEventsJsonShape) {
         const auto& t = e["intervals"][i][k];
         EXPECT_TRUE(t.is_number() || t.is_string());
         EXPECT_TRUE(e["ends"][i][k].contains("cause"));
+        ASSERT_TRUE(e["ends"][i][k].contains("key"));
+        const auto& key = e["ends"][i][k]["key"];
+        // An EEE end meets the family's edges: its key lists edges (and no vertex beyond the one it passes).
+        EXPECT_GE(key["edges"].size(), 2u) << key.dump();
+        EXPECT_LE(key["vertices"].size(), 1u) << key.dump();
         ASSERT_TRUE(e["ends"][i][k]["line"].contains("through"));
         EXPECT_EQ(e["ends"][i][k]["line"]["through"].size(), 2u);
         EXPECT_EQ(e["ends"][i][k]["line"]["on_generators"].size(), 3u);

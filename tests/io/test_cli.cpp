@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <sys/wait.h>
@@ -122,4 +123,30 @@ TEST(Cli, BadScenesFailCleanlyWithoutOutput) {
   // One line: "exactvis info: error: FILE: problem".
   EXPECT_EQ(r.err, "exactvis info: error: " + broken + ": line 3: vertex index 3 out of range (file has 2 vertices)\n")
       << r.err;
+}
+
+// Broken files as a user meets them, through `exactvis info`: assimp's invalid models and the inputs that
+// crashed, hung or misled before (huge PLY list counts, UTF-16 text). One line "exactvis info: error: FILE:
+// problem", exit status 1 (not a signal).
+TEST(Cli, BrokenFilesThroughInfo) {
+  TempDir dir;
+  std::vector<std::string> files;
+  const std::filesystem::path assimp = "/usr/share/assimp/models/invalid";
+  if (std::filesystem::exists(assimp))
+    for (const auto& e : std::filesystem::directory_iterator(assimp))
+      if (e.path().extension() != ".txt") files.push_back(e.path().string());
+  const std::string head =
+      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nelement face 1\n";
+  files.push_back(iotest::write_file(dir.file("huge.ply"), head + "property list uchar int vertex_indices\nend_header\n"
+                                                                  "0 0 0\n1 0 0\n0 1 0\n4294967296 0 1 2\n"));
+  files.push_back(iotest::write_file(dir.file("c256.ply"), head + "property list uchar int vertex_indices\nend_header\n"
+                                                                  "0 0 0\n1 0 0\n0 1 0\n256 0 1 2\n"));
+  files.push_back(iotest::write_file(dir.file("u16.obj"), std::string("\xFF\xFEv\0 \0" "0\0", 8)));
+  for (const std::string& f : files) {
+    const CliRun r = run(dir, "info " + f);
+    EXPECT_EQ(r.status, 1) << f << ": " << r.err;
+    EXPECT_EQ(r.err.rfind("exactvis info: error: " + f + ": ", 0), 0u) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  }
+  EXPECT_GE(files.size(), 3u);
 }

@@ -8,7 +8,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <map>
 #include <set>
 
@@ -266,4 +268,88 @@ TEST(LoadScene, MultiFileScene) {
   EXPECT_EQ(object_names_per_triangle(s), (std::vector<std::string>{"box", "box", "b.off#component0"}));
   EXPECT_EQ(s.vertices.size(), 7u);
   EXPECT_EQ(s.vertices[4].x, 5.0);
+}
+
+// OFF with per-face colours (RGB floats, RGBA, a colour-map index) and a COFF with vertex colours and
+// comments, as CGAL's quint_tris.off and mesh_with_colors.off: the colours are not part of the face lists.
+// OpenMesh read them as indices and lost every face after the first; its copy now holds only the indices.
+TEST(LoadScene, OffFaceColoursAreAccepted) {
+  TempDir dir;
+  const Scene a = load_scene(write_file(dir.file("rgb.off"), "OFF\n4 3 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n"
+                                                             "3 0 1 2 .7 0 0 \n3 0 1 3 0.1 0.2 0.3 1.0\n3 1 2 3 4\n"));
+  EXPECT_EQ(corners(a), (std::vector<Tri>{{0, 1, 2}, {0, 1, 3}, {1, 2, 3}}));
+  const Scene b = load_scene(write_file(dir.file("coff.off"),
+                                        "# a comment\nCOFF\n5 2 0\n\n0 0 0 0.9 0 0 #red\n1 0 0 0 0 0.9\n1 1 0 0 0 0.9\n"
+                                        "0 1 0 0.9 0 0\n2 2 0 0 0 1\n3 0 1 3     0.9 0 0  #red\n4 1 4 2 3 0 0 0.9\n"));
+  EXPECT_EQ(corners(b), (std::vector<Tri>{{0, 1, 3}, {1, 4, 2}, {1, 2, 3}}));
+  EXPECT_EQ(b.vertices[4].x, 2.0);
+  // CGAL's own files (libcgal-demo ships them in a tarball), when the tarball is there.
+  const std::string tarball = "/usr/share/doc/libcgal-demo/data.tar.gz";
+  if (!std::filesystem::exists(tarball)) GTEST_SKIP() << "libcgal-demo data not installed";
+  const std::string cmd = "tar -xzf " + tarball + " -C " + dir.path.string() +
+                          " data/meshes/quint_tris.off data/meshes/mesh_with_colors.off 2>/dev/null";
+  ASSERT_EQ(std::system(cmd.c_str()), 0);
+  const Scene q = load_scene(dir.file("data/meshes/quint_tris.off"));
+  EXPECT_EQ(q.faces_read, 20);
+  EXPECT_EQ(q.vertices.size(), 12u);
+  EXPECT_EQ(q.triangles[0].v, (Tri{0, 1, 10}));
+  const Scene m = load_scene(dir.file("data/meshes/mesh_with_colors.off"));
+  EXPECT_EQ(m.vertices.size(), 8u);
+  EXPECT_EQ(m.faces_read, 3 + 3);  // three triangles and a pentagon (3 fan triangles)
+}
+
+// One rule for coordinates beyond float32's range, in every format: accepted, exact (our parsers read them;
+// OpenMesh, which reads float32 and stops at such a value, gets stand-ins and only has to agree on the
+// connectivity); beyond the double range they are refused with the same message.
+TEST(LoadScene, CoordinatesBeyondFloat32InEveryFormat) {
+  TempDir dir;
+  const std::vector<std::pair<std::string, std::string>> files = {
+      {"b.obj", "v 0 0 0\nv 1e39 0 0\nvn 0 0 1e39\nv 0 -1e308 0\nv 0 0 1\nf 1 2 3\nf 1 3 4\n"},
+      {"b.off", "OFF\n4 2 0\n0 0 0\n1e39 0 0\n0 -1e308 0\n0 0 1\n3 0 1 2\n3 0 2 3\n"},
+      {"b.ply", "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
+                "element face 2\nproperty list uchar int vertex_indices\nend_header\n"
+                "0 0 0\n1e39 0 0\n0 -1e308 0\n0 0 1\n3 0 1 2\n3 0 2 3\n"},
+      {"b.stl", "solid b\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1e39 0 0\nvertex 0 -1e308 0\nendloop\n"
+                "endfacet\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 0 -1e308 0\nvertex 0 0 1\nendloop\n"
+                "endfacet\nendsolid b\n"}};
+  for (const auto& [name, text] : files) {
+    SCOPED_TRACE(name);
+    const Scene s = load_scene(write_file(dir.file(name), text));
+    ASSERT_EQ(s.vertices.size(), 4u);
+    EXPECT_EQ(s.vertices[1].x, 1e39);
+    EXPECT_EQ(s.vertices[2].y, -1e308);
+    EXPECT_EQ(corners(s), (std::vector<Tri>{{0, 1, 2}, {0, 2, 3}}));
+  }
+  for (const auto& [name, text] : files) {
+    std::string t = text;
+    t.replace(t.find("1e39"), 4, "1e400");
+    try {
+      load_scene(write_file(dir.file("x" + name), t));
+      ADD_FAILURE() << name << ": 1e400 accepted";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("non-finite coordinate '1e400' (beyond the range of doubles"),
+                std::string::npos)
+          << e.what();
+    }
+  }
+}
+
+// A UTF-8 byte-order mark is skipped in every format: the same scene as without it.
+TEST(LoadScene, Utf8ByteOrderMarkIsSkipped) {
+  TempDir dir;
+  const std::vector<std::pair<std::string, std::string>> files = {
+      {"m.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"},
+      {"m.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"},
+      {"m.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+                "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"},
+      {"m.stl", "solid m\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nendloop\n"
+                "endfacet\nendsolid m\n"}};
+  for (const auto& [name, text] : files) {
+    SCOPED_TRACE(name);
+    const Scene plain = load_scene(write_file(dir.file(name), text));
+    const Scene bom = load_scene(write_file(dir.file("bom" + name), "\xEF\xBB\xBF" + text));
+    EXPECT_EQ(corners(bom), corners(plain));
+    EXPECT_EQ(bom.vertices.size(), 3u);
+    EXPECT_EQ(bom.vertices[1].x, 1.0);
+  }
 }

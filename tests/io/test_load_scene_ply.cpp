@@ -206,10 +206,7 @@ TEST(LoadScenePly, BrokenFilesAreInputErrors) {
                                                      "property double y\nproperty double z\nelement face 1\n"
                                                      "property list uchar int vertex_indices\nend_header\n"
                                                      "0 0 0\n1 zero 0\n0 1 0\n3 0 1 2\n"));
-  // A finite ASCII value beyond float32's range: OpenMesh's reader cannot take it.
-  expect_input_error(write_file(dir.file("big.ply"), std::string("ply\nformat ascii 1.0\n") + kDoubleHeaderBody +
-                                                         "0 0 0\n1 0 1e300\n0 1 0\n0 0 1\n3 0 1 2\n3 0 2 3\n"),
-                     "beyond float32's range");
+  // A finite ASCII value beyond float32's range is no longer refused: LoadScenePly.ValuesBeyondFloat32 loads it.
   // NaN / infinite coordinates: ASCII text and binary doubles.
   for (const char* v : {"nan", "NaN", "inf", "-inf", "1e400"})
     expect_input_error(write_file(dir.file("nan.ply"), std::string("ply\nformat ascii 1.0\n") + kDoubleHeaderBody +
@@ -224,4 +221,30 @@ TEST(LoadScenePly, BrokenFilesAreInputErrors) {
     }
     expect_input_error(write_file(dir.file("nan_bin.ply"), s), "non-finite");
   }
+}
+
+// Finite values beyond float32's range are coordinates like any other (docs/theory.md, section 4): exact in
+// ASCII (any declared type) and binary, also in skipped float properties; OpenMesh, which reads float32 and
+// stops at such a value, only has to agree on the connectivity.
+TEST(LoadScenePly, ValuesBeyondFloat32) {
+  TempDir dir;
+  const std::string header = "element vertex 4\nproperty float x\nproperty float y\nproperty float z\nproperty float q\n"
+                             "element face 2\nproperty list uchar int vertex_indices\nend_header\n";
+  const Scene a = load_scene(write_file(dir.file("big.ply"), "ply\nformat ascii 1.0\n" + header +
+                                                                "0 0 0 1e39\n1 0 1e300 0\n0 -3.5e38 0 0\n0 0 1 0\n"
+                                                                "3 0 1 2\n3 0 2 3\n"));
+  ASSERT_EQ(a.vertices.size(), 4u);
+  EXPECT_EQ(a.vertices[1].z, 1e300);
+  EXPECT_EQ(a.vertices[2].y, -3.5e38);
+  EXPECT_EQ(a.triangles.size(), 2u);
+  // Binary doubles: the same values.
+  std::string s = std::string("ply\nformat binary_little_endian 1.0\n") + kDoubleHeaderBody;
+  for (double c : {0.0, 0.0, 0.0, 1.0, 0.0, 1e300, 0.0, -3.5e38, 0.0, 0.0, 0.0, 1.0}) put(s, c, false);
+  for (int f = 0; f < 2; ++f) {
+    s += static_cast<char>(3);
+    for (std::int32_t v : {0, f + 1, f + 2}) put(s, v, false);
+  }
+  const Scene b = load_scene(write_file(dir.file("big_bin.ply"), s));
+  EXPECT_EQ(b.vertices[1].z, 1e300);
+  EXPECT_EQ(b.vertices[2].y, -3.5e38);
 }

@@ -2,8 +2,9 @@
 // coplanar with building bottoms, many small crown triangles): every answer checked by the independent
 // oracle (witness re-check; refutation sampling of hidden answers).
 #include "kernel/scene_generators.hpp"
-#include "kernel/spatial_index.hpp"
+#include "kernel/triangle_index.hpp"
 #include "oracles/visibility_oracle.hpp"
+#include "tests/region/oracle_input.hpp"
 #include "region/from_region_visibility.hpp"
 
 #include <gtest/gtest.h>
@@ -13,22 +14,17 @@ using namespace exactvis::region;
 
 namespace {
 
-oracle::QVec qv(const Point3& p) { return oracle::qvec(p.x, p.y, p.z); }
-oracle::QVec qv(const RationalPoint3& p) { return {mpq_class(p.x.mpq()), mpq_class(p.y.mpq()), mpq_class(p.z.mpq())}; }
+using region_test::qv;
 
 struct Tally {
   int visible = 0, hidden = 0;
 };
 
 Tally check_scene(const Scene& scene, const Box3& cell, int stride) {
-  const SpatialIndex index(scene);
-  const CandidateFinder finder = [&index](const Box3& b) { return index.triangles_in_box(b); };
-  std::vector<oracle::Triangle> os;
-  for (const auto& t : scene.triangles) os.push_back({qv(scene.corner(t, 0)), qv(scene.corner(t, 1)), qv(scene.corner(t, 2))});
-  oracle::Source src;
-  src.is_box = true;
-  src.lo = qv(cell.lo);
-  src.hi = qv(cell.hi);
+  const TriangleIndex index(scene);
+  const CandidateFinder finder = [&index](const Box3& b) { return index.candidates_in_box(b); };
+  const std::vector<oracle::Triangle> os = region_test::oracle_scene(scene);
+  const oracle::Source src = region_test::oracle_box(cell.lo, cell.hi);
   Tally tally;
   for (std::size_t i = 0; i < scene.triangles.size(); i += stride) {
     const VisibilityResult r = visible_from_box(scene, finder, cell, static_cast<std::int64_t>(i));

@@ -1,6 +1,7 @@
 // `exactvis visible` run as a user would: the JSON shape of the issue, exact witnesses re-checked by the
 // independent oracle after parsing them back from JSON, the .vtp output, and bad parameters.
 #include "oracles/visibility_oracle.hpp"
+#include "tests/cli_test_util.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -19,17 +20,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-struct CliRun {
-  int status;
-  std::string out, err;
-};
-
-std::string slurp(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using cli_test::CliRun;
+using cli_test::slurp;
 
 class VisibleCli : public ::testing::Test {
  protected:
@@ -48,11 +40,7 @@ class VisibleCli : public ::testing::Test {
   }
   void TearDown() override { fs::remove_all(dir_); }
   std::string path(const std::string& name) const { return (dir_ / name).string(); }
-  CliRun run(const std::string& args) const {
-    const std::string out = path("stdout"), err = path("stderr");
-    const int raw = std::system((std::string(EXACTVIS_BINARY) + " " + args + " >" + out + " 2>" + err).c_str());
-    return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(out), slurp(err)};
-  }
+  CliRun run(const std::string& args) const { return cli_test::run_exactvis(dir_, args); }
   fs::path dir_;
 };
 

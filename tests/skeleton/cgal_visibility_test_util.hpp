@@ -2,7 +2,7 @@
 // Test helpers: CGAL's visibility (Triangular_expansion_visibility_2, regularized, exact kernel) as an
 // independent reference for visibility polygons, and exact comparison of polygons up to start vertex and
 // collinear vertices.
-#include "scene2d_test_util.hpp"
+#include "tests/planar/scene2d_test_util.hpp"
 
 #include <CGAL/Arr_naive_point_location.h>
 #include <CGAL/Arr_segment_traits_2.h>

@@ -7,7 +7,12 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <sstream>
+#include <stdexcept>
+#include <sys/wait.h>
+#include <unistd.h>
+#include <vector>
 
 namespace {
 
@@ -18,7 +23,10 @@ struct CliRun {
 
 CliRun run(const std::string& args) {
   const auto dir = std::filesystem::temp_directory_path();
-  const std::string out = (dir / "exactvis_plane2d_cli.out").string(), err = (dir / "exactvis_plane2d_cli.err").string();
+  // Per process (ctest -j runs each test in its own process at the same time): no shared capture files.
+  const std::string tag = std::to_string(getpid());
+  const std::string out = (dir / ("exactvis_plane2d_cli." + tag + ".out")).string(),
+                    err = (dir / ("exactvis_plane2d_cli." + tag + ".err")).string();
   const int raw = std::system((std::string(EXACTVIS_BINARY) + " " + args + " >" + out + " 2>" + err).c_str());
   auto slurp = [](const std::string& p) {
     std::ifstream in(p);
@@ -26,11 +34,24 @@ CliRun run(const std::string& args) {
     s << in.rdbuf();
     return s.str();
   };
-  return {WEXITSTATUS(raw), slurp(out), slurp(err)};
+  CliRun r{WEXITSTATUS(raw), slurp(out), slurp(err)};
+  std::filesystem::remove(out);
+  std::filesystem::remove(err);
+  return r;
 }
 
+// Scene files written by write(), removed when the test process ends.
+struct WrittenFiles {
+  std::vector<std::string> paths;
+  ~WrittenFiles() {
+    std::error_code ec;
+    for (const auto& p : paths) std::filesystem::remove(p, ec);
+  }
+} written_files;
+
 std::string write(const std::string& name, const std::string& text) {
-  const auto path = (std::filesystem::temp_directory_path() / ("exactvis_plane2d_" + name)).string();
+  const auto path = (std::filesystem::temp_directory_path() / ("exactvis_plane2d_" + std::to_string(getpid()) + "_" + name)).string();
+  written_files.paths.push_back(path);
   std::ofstream(path) << text;
   return path;
 }
@@ -121,4 +142,193 @@ TEST(Cli2D, BadInputGivesOneLineErrorAndNonZeroExit) {
     EXPECT_NE(r.status, 0) << args;
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << args << ": " << r.err;
   }
+}
+
+namespace {
+
+// A run in its own temporary directory (files the command writes land there; nothing else does).
+struct CliDir {
+  std::filesystem::path path;
+  CliDir() {
+    std::string templ = (std::filesystem::temp_directory_path() / "exactvis-cli2d-XXXXXX").string();
+    if (!mkdtemp(templ.data())) throw std::runtime_error("mkdtemp failed");
+    path = templ;
+  }
+  ~CliDir() {
+    std::error_code ec;
+    std::filesystem::remove_all(path, ec);
+  }
+  std::string file(const std::string& name) const { return (path / name).string(); }
+  std::string write(const std::string& name, const std::string& text) const {
+    std::ofstream(file(name)) << text;
+    return file(name);
+  }
+  // `command` goes through /bin/sh with stdout and stderr captured (outside the directory's listing).
+  CliRun sh(const std::string& command) const {
+    const std::string out = file(".out"), err = file(".err");
+    const int raw = std::system(("(" + command + ") >" + out + " 2>" + err).c_str());
+    auto slurp = [](const std::string& p) {
+      std::ifstream in(p);
+      std::stringstream s;
+      s << in.rdbuf();
+      return s.str();
+    };
+    CliRun r{WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(out), slurp(err)};
+    std::filesystem::remove(out);
+    std::filesystem::remove(err);
+    return r;
+  }
+  CliRun run(const std::string& args) const { return sh(std::string(EXACTVIS_BINARY) + " " + args); }
+  std::vector<std::string> entries() const {
+    std::vector<std::string> names;
+    for (const auto& e : std::filesystem::directory_iterator(path)) names.push_back(e.path().filename().string());
+    std::sort(names.begin(), names.end());
+    return names;
+  }
+};
+
+int lines(const std::string& s) { return static_cast<int>(std::count(s.begin(), s.end(), '\n')); }
+
+}  // namespace
+
+// Coordinates whose squares or cubes overflow doubles: aspect2d crashed (SIGSEGV) while complex2d and
+// visibility2d answered; margins that overflow the frame crashed with SIGFPE. Now: exact answers, or one
+// line naming the problem (docs/theory.md section 7, "Coordinate range").
+TEST(Cli2D, HugeCoordinatesAndMargins) {
+  ASSERT_TRUE(std::filesystem::exists(EXACTVIS_BINARY));
+  const CliDir d;
+  for (const char* big : {"1e308", "1e155", "1e103"}) {
+    const std::string scene = d.write(std::string("big") + big + ".json",
+                                      std::string(R"({"polygons": [[[0,0],[)") + big + R"(,0],[0,1]]]})");
+    const CliRun a = d.run("aspect2d " + scene + " --json --svg " + d.file("a.svg"));
+    ASSERT_EQ(a.status, 0) << big << ": " << a.err;
+    const auto j = nlohmann::json::parse(a.out);
+    EXPECT_GE(j["regions"].size(), 2u) << big;
+    const CliRun c = d.run("complex2d " + scene + " --json");
+    ASSERT_EQ(c.status, 0) << big << ": " << c.err;
+    const CliRun v = d.run("visibility2d " + scene + " --from -1,-1");
+    ASSERT_EQ(v.status, 0) << big << ": " << v.err;
+    // the picture is scaled to finite SVG numbers
+    std::ifstream svg(d.file("a.svg"));
+    const std::string pic((std::istreambuf_iterator<char>(svg)), std::istreambuf_iterator<char>());
+    EXPECT_EQ(pic.find("inf"), std::string::npos) << big;
+    EXPECT_EQ(pic.find("nan"), std::string::npos) << big;
+  }
+  const std::string tri = d.write("tri.json", R"({"polygons": [[[0,0],[1,0],[0,1]]]})");
+  EXPECT_EQ(d.run("aspect2d " + tri + " --margin 1e308").status, 0);
+  for (const std::string args : {"aspect2d " + tri + " --margin inf", "aspect2d " + tri + " --margin nan",
+                                 "visibility2d " + tri + " --from 0.1,0.1 --margin inf",
+                                 "aspect2d " + d.file("big1e308.json") + " --margin 1",
+                                 "visibility2d " + d.file("big1e308.json") + " --from -1,-1 --margin 1"}) {
+    const CliRun r = d.run(args);
+    EXPECT_EQ(r.status, 1) << args;
+    EXPECT_EQ(lines(r.err), 1) << args << ": " << r.err;
+  }
+  EXPECT_NE(d.run("aspect2d " + d.file("big1e308.json") + " --margin 1").err.find("largest double"), std::string::npos);
+  // Segment queries near the double range: both methods answer (the complex method's frame shrinks to
+  // margin 0 when margin 0.5 does not fit; any frame containing S and T gives the same answer).
+  const std::string b17 = d.write("b17.json", R"({"polygons": [[[0,0],[1.7e308,0],[0,1]]]})");
+  for (const char* seg : {"--from-segment -1,-1,-1,-2 --to-segment -3,-1,-3,-2",
+                          "--from-segment -1,0.5,-1,0.7 --to-segment 1e300,2,1e300,3"}) {
+    const CliRun a = d.run("visibility2d " + b17 + " " + seg), b = d.run("visibility2d " + b17 + " " + seg + " --method sweep");
+    ASSERT_EQ(a.status, 0) << seg << ": " << a.err;
+    ASSERT_EQ(b.status, 0) << seg << ": " << b.err;
+    EXPECT_EQ(nlohmann::json::parse(a.out)["visible"], nlohmann::json::parse(b.out)["visible"]) << seg;
+  }
+  // The frame widens for far viewpoints (it stopped after 64 doublings: "outside the frame").
+  for (const char* from : {"1e300,3", "-1.7e308,0.5"}) {
+    const CliRun r = d.run("visibility2d " + tri + " --from " + from);
+    ASSERT_EQ(r.status, 0) << from << ": " << r.err;
+    const auto j = nlohmann::json::parse(r.out);
+    const double x = j["from"][0].get<double>();
+    EXPECT_LT(j["frame"][0][0].get<double>(), x) << from;
+    EXPECT_GT(j["frame"][1][0].get<double>(), x) << from;
+  }
+}
+
+// 2D scene files: trailing data after the JSON value is refused (it was ignored), a directory is named.
+TEST(Cli2D, SceneFileErrorsNameTheProblem) {
+  ASSERT_TRUE(std::filesystem::exists(EXACTVIS_BINARY));
+  const CliDir d;
+  const std::string good = R"({"polygons": [[[0,0],[1,0],[0,1]]]})";
+  EXPECT_EQ(d.run("complex2d " + d.write("ws.json", good + "\n \n")).status, 0);
+  const std::string trail = d.write("trail.json", good + " xyz");
+  const std::string second = d.write("second.json", good + good);
+  std::filesystem::create_directory(d.file("dir.json"));
+  const std::vector<std::pair<std::string, std::string>> bad = {
+      {"complex2d " + trail, "not valid JSON"},          {"aspect2d " + second, "not valid JSON"},
+      {"complex2d " + d.file("dir.json"), "is a directory"}, {"visibility2d " + d.file("dir.json") + " --from 0,0", "is a directory"},
+      {"complex2d " + d.file("dir.json") + " --slice z=0", "is a directory"}};
+  for (const auto& [args, why] : bad) {
+    const CliRun r = d.run(args);
+    EXPECT_EQ(r.status, 1) << args;
+    EXPECT_EQ(lines(r.err), 1) << args << ": " << r.err;
+    EXPECT_NE(r.err.find(why), std::string::npos) << args << ": " << r.err;
+  }
+}
+
+// An output that cannot be written fails the command with one line (no VTK log), and no output of the run
+// is left: an unwritable --vtp is found before the work, a write that fails midway (file size limit) removes
+// everything the run wrote.
+TEST(Cli2D, OutputFailuresLeaveNoFiles) {
+  ASSERT_TRUE(std::filesystem::exists(EXACTVIS_BINARY));
+  const CliDir d;
+  const std::string scene = d.write("two.json", kTwoSquares);
+  d.write("plain", "x");
+  const auto before = d.entries();
+  for (const char* cmd : {"complex2d", "aspect2d"}) {
+    for (const std::string vtp : {d.file("missing/out.vtp"), d.file("plain/out.vtp"), d.file("out.svg")}) {
+      const std::string args = std::string(cmd) + " " + scene + " --svg " + d.file("out.svg") + " --vtp " + vtp;
+      const CliRun r = d.run(args);
+      EXPECT_EQ(r.status, 1) << args;
+      EXPECT_EQ(lines(r.err), 1) << args << ": " << r.err;
+      EXPECT_EQ(d.entries(), before) << args;
+    }
+    // A file size limit makes the writes fail part-way (SIGXFSZ ignored, so write() reports EFBIG).
+    for (const std::string outs : {" --vtp " + d.file("out.vtp"), " --svg " + d.file("out.svg") + " --vtp " + d.file("out.vtp")}) {
+      const std::string command = "trap '' XFSZ; ulimit -f 1; " + std::string(EXACTVIS_BINARY) + " " + cmd + " " + scene + outs;
+      const CliRun r = d.sh(command);
+      EXPECT_EQ(r.status, 1) << command;
+      EXPECT_EQ(lines(r.err), 1) << command << ": " << r.err;
+      EXPECT_EQ(r.err.find("vtk"), std::string::npos) << r.err;
+      EXPECT_EQ(r.err.find("ERROR"), std::string::npos) << r.err;
+      EXPECT_EQ(d.entries(), before) << command;
+    }
+  }
+}
+
+// aspect2d's progress bars go to a terminal only (and not with -q); large scenes get a cost warning first.
+TEST(Cli2D, Aspect2dProgressAndCostWarning) {
+  ASSERT_TRUE(std::filesystem::exists(EXACTVIS_BINARY));
+  const CliDir d;
+  // A square with 204 vertices (flat ones along its sides): large by count, cheap to compute.
+  std::string ring;
+  for (int side = 0; side < 4; ++side)
+    for (int i = 0; i < 51; ++i) {
+      const int x = side == 0 ? i : side == 1 ? 51 : side == 2 ? 51 - i : 0;
+      const int y = side == 0 ? 0 : side == 1 ? i : side == 2 ? 51 : 51 - i;
+      ring += (ring.empty() ? "" : ",") + std::string("[") + std::to_string(x) + "," + std::to_string(y) + "]";
+    }
+  const std::string large = d.write("large.json", R"({"polygons": [[)" + ring + "]]}");
+  const std::string small = d.write("small.json", kTwoSquares);
+  CliRun r = d.run("aspect2d " + small);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.err, "");  // not a terminal: no bars
+  r = d.run("aspect2d " + large);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(lines(r.err), 1) << r.err;
+  EXPECT_EQ(r.err.rfind("aspect2d: warning: 204 vertices", 0), 0u) << r.err;
+  EXPECT_NE(r.err.find("O(n^4)"), std::string::npos) << r.err;
+  r = d.run("aspect2d " + large + " -q");
+  ASSERT_EQ(r.status, 0);
+  EXPECT_EQ(r.err, "");
+  // On a terminal (script(1) gives the command one): the bars of the three stages.
+  if (!std::filesystem::exists("/usr/bin/script")) GTEST_SKIP() << "script(1) not installed";
+  r = d.sh("/usr/bin/script -qec '" + std::string(EXACTVIS_BINARY) + " aspect2d " + small + "' /dev/null");
+  ASSERT_EQ(r.status, 0) << r.err;
+  for (const char* stage : {"aspect2d: event segments [", "aspect2d: arrangement [", "aspect2d: faces ["})
+    EXPECT_NE(r.out.find(stage), std::string::npos) << stage << ": " << r.out;
+  EXPECT_NE(r.out.find("100%"), std::string::npos) << r.out;
+  r = d.sh("/usr/bin/script -qec '" + std::string(EXACTVIS_BINARY) + " aspect2d -q " + small + "' /dev/null");
+  EXPECT_EQ(r.out.find("aspect2d: faces"), std::string::npos) << r.out;
 }

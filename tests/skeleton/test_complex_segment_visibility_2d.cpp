@@ -4,7 +4,7 @@
 // walls with small offset gaps ("double keyholes"), where S sees T only through a thin bundle of lines
 // bounded by lines through two corners of different walls (strict pairs of the visibility graph): a breakpoint
 // set without those lines finds no witness there.
-#include "scene2d_test_util.hpp"
+#include "tests/planar/scene2d_test_util.hpp"
 #include "skeleton/complex_segment_visibility_2d.hpp"
 
 #include <gtest/gtest.h>

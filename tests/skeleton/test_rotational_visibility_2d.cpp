@@ -3,7 +3,7 @@
 // forces with gmpxx rationals (strict pairs here, bitangents with their maximal free segments in
 // tests/oracles). Random and degenerate scenes with fixed seeds: integer grids (collinear vertices across
 // objects, parallel edges), flat vertices, holes, non-convex polygons, concurrent bitangents, frames.
-#include "scene2d_test_util.hpp"
+#include "tests/planar/scene2d_test_util.hpp"
 #include "skeleton/rotational_visibility_2d.hpp"
 #include "skeleton/visibility_complex_2d.hpp"
 #include "skeleton/visibility_polygon_2d.hpp"

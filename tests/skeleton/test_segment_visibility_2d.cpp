@@ -1,6 +1,6 @@
 // Segment-to-segment visibility: witnesses re-checked by the oracle; "not visible" answers attacked by
 // random sampling of connecting segments; hand-made narrow gaps and walls.
-#include "scene2d_test_util.hpp"
+#include "tests/planar/scene2d_test_util.hpp"
 #include "skeleton/segment_visibility_2d.hpp"
 
 #include <gtest/gtest.h>

@@ -1,6 +1,6 @@
 // The visibility complex: incidences (4 edges and 6 face slots per vertex, 3 per edge), face end-object
 // pairs against maximal free segments of random lines computed by the brute-force oracle.
-#include "scene2d_test_util.hpp"
+#include "tests/planar/scene2d_test_util.hpp"
 #include "skeleton/visibility_complex_2d.hpp"
 
 #include <gtest/gtest.h>

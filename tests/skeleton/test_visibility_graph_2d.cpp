@@ -1,5 +1,5 @@
 // Bitangents and maximal free segments against the O(n^3) exact brute force of tests/oracles.
-#include "scene2d_test_util.hpp"
+#include "tests/planar/scene2d_test_util.hpp"
 #include "skeleton/visibility_graph_2d.hpp"
 
 #include <gtest/gtest.h>

@@ -1,0 +1,170 @@
+#include "region/line_set_csg.hpp"
+
+#include "kernel/segment_triangle_intersection.hpp"
+#include "region/occluder_shaft.hpp"
+#include "region/polyhedral_cone6.hpp"
+#include "region/real_line_test.hpp"
+
+#include <algorithm>
+#include <random>
+#include <stdexcept>
+
+namespace exactvis::region {
+namespace {
+
+struct Piece {
+  PolyhedralCone6 cone;
+  RealLineTest test;
+  std::size_t next = 0;  // first occluder not yet subtracted
+};
+
+class PairQuery {
+ public:
+  PairQuery(const Scene& scene, const std::vector<std::int64_t>& candidates, std::int64_t target,
+            const StabbingPair& pair, const VisibilityOptions& options, VisibilityStats& stats)
+      : scene_(scene), candidates_(candidates), target_(target), pair_(pair), options_(options), stats_(stats),
+        rng_(options.seed * 0x9E3779B97F4A7C15ull + static_cast<std::uint64_t>(target)) {}
+
+  std::optional<Witness> run() {
+    occluders_ = shaft_occluders(scene_, candidates_, target_, pair_);
+    stats_.occluders_considered += static_cast<std::int64_t>(occluders_.size());
+    if (auto w = sample()) {
+      stats_.accepted_by_sampling = true;
+      return w;
+    }
+    std::stable_sort(occluders_.begin(), occluders_.end(),
+                     [](const ShaftOccluder& x, const ShaftOccluder& y) { return x.blocked_samples > y.blocked_samples; });
+    effective_.assign(occluders_.size(), false);
+
+    std::optional<PolyhedralCone6> k0 = whole_space_cone();
+    for (const auto& e : pair_.edge_lines) {
+      k0 = intersect_open_halfspace(*k0, side_functional(e));
+      if (!k0) return std::nullopt;
+    }
+    Piece first{*k0, test(*k0), 0};
+    if (!first.test.has_real_lines) return std::nullopt;
+    std::vector<Piece> stack{std::move(first)};
+    while (!stack.empty()) {
+      stats_.cones_alive_max = std::max<std::int64_t>(stats_.cones_alive_max, static_cast<std::int64_t>(stack.size()));
+      Piece piece = std::move(stack.back());
+      stack.pop_back();
+      std::size_t j = piece.next;
+      while (j < occluders_.size() && !touches(piece.cone, occluders_[j])) ++j;
+      if (j == occluders_.size()) {
+        if (auto w = witness_from(piece)) return w;
+        throw std::logic_error("from-region query: a cone with real lines yielded no free witness segment");
+      }
+      if (!effective_[j]) {
+        effective_[j] = true;
+        ++stats_.effective_occluders;
+      }
+      std::vector<Piece> outside;
+      split(piece.cone, piece.test, occluders_[j], 0, false, false, outside);
+      for (auto& p : outside) {
+        p.next = j + 1;
+        stack.push_back(std::move(p));
+      }
+    }
+    return std::nullopt;
+  }
+
+ private:
+  RealLineTest test(const PolyhedralCone6& cone) {
+    ++stats_.real_line_tests;
+    RealLineTest t = test_real_lines(cone);
+    stats_.face_tests += t.faces_examined;
+    return t;
+  }
+
+  // Could some line of the cone meet the occluder (all edge sides >= 0, or all <= 0)?
+  bool touches(const PolyhedralCone6& cone, const ShaftOccluder& occ) const {
+    bool plus = true, minus = true;
+    for (const auto& w : occ.edges) {
+      const HalfspaceRelation r = relation_to_halfspace(cone, w);
+      if (r == HalfspaceRelation::Outside) plus = false;
+      if (r == HalfspaceRelation::Inside) minus = false;
+      if (!plus && !minus) return false;
+    }
+    return true;
+  }
+
+  // Pieces of cone minus the occluder's line set: lines that pass the edges with mixed signs.
+  void split(const PolyhedralCone6& cone, const RealLineTest& t, const ShaftOccluder& occ, std::size_t k, bool pos,
+             bool neg, std::vector<Piece>& out) {
+    if (pos && neg) {
+      out.push_back(Piece{cone, t, 0});
+      return;
+    }
+    if (k == occ.edges.size()) return;  // every edge passed on one side: the lines hit the occluder
+    const IntVec6& w = occ.edges[k];
+    const HalfspaceRelation r = relation_to_halfspace(cone, w);
+    if (r == HalfspaceRelation::Inside) return split(cone, t, occ, k + 1, true, neg, out);
+    if (r == HalfspaceRelation::Outside) return split(cone, t, occ, k + 1, pos, true, out);
+    for (int s : {+1, -1}) {
+      IntVec6 ws = w;
+      if (s < 0)
+        for (auto& c : ws) c = -c;
+      ++stats_.splits;
+      auto part = intersect_open_halfspace(cone, ws);
+      if (!part) continue;
+      ++stats_.cones_created;
+      RealLineTest pt = test(*part);
+      if (!pt.has_real_lines) continue;
+      split(*part, pt, occ, k + 1, pos || s > 0, neg || s < 0, out);
+    }
+  }
+
+  std::optional<Witness> witness_from(const Piece& piece) {
+    for (int attempt = 0; attempt < 64; ++attempt) {
+      auto cand = line_in_cone(piece.cone, piece.test, pair_, rng_);
+      if (!cand) continue;
+      // Free of every subtracted occluder by construction; re-check against all candidates, which also
+      // covers the measure-zero blockers the CSG may ignore (docs/theory.md §5.4).
+      if (segment_is_free(scene_, candidates_, cand->p, cand->q, target_)) return Witness{cand->p, cand->q};
+    }
+    return std::nullopt;
+  }
+
+  // Sample segments are cast with double endpoints (the counts only order the occluders); a sample that
+  // looks free is redone with its exact rational endpoints and accepted only after the exact check.
+  std::optional<Witness> sample() {
+    const auto src = approximate_polygon(pair_.source), dst = approximate_polygon(pair_.target);
+    for (int s = 0; s < options_.samples; ++s) {
+      ++stats_.samples_cast;
+      const auto ws = random_weights(src.size(), rng_), wt = random_weights(dst.size(), rng_);
+      const Point3 p = weighted_point_approx(src, ws), q = weighted_point_approx(dst, wt);
+      bool free = true;
+      for (auto& occ : occluders_)
+        if (open_segment_meets_closed_triangle(p, q, occ.corners_d[0], occ.corners_d[1], occ.corners_d[2])) {
+          ++occ.blocked_samples;
+          free = false;
+        }
+      if (!free) continue;
+      const RationalPoint3 pe = weighted_point(pair_.source, ws), qe = weighted_point(pair_.target, wt);
+      if (segment_is_free(scene_, candidates_, pe, qe, target_)) return Witness{pe, qe};
+    }
+    return std::nullopt;
+  }
+
+  const Scene& scene_;
+  const std::vector<std::int64_t>& candidates_;
+  std::int64_t target_;
+  const StabbingPair& pair_;
+  const VisibilityOptions& options_;
+  VisibilityStats& stats_;
+  std::mt19937_64 rng_;
+  std::vector<ShaftOccluder> occluders_;
+  std::vector<bool> effective_;
+};
+
+}  // namespace
+
+PairVisibility pair_visibility(const Scene& scene, const std::vector<std::int64_t>& candidates, std::int64_t target,
+                               const StabbingPair& pair, const VisibilityOptions& options) {
+  PairVisibility out;
+  PairQuery query(scene, candidates, target, pair, options, out.stats);
+  out.witness = query.run();
+  return out;
+}
+
+}  // namespace exactvis::region

@@ -1,0 +1,32 @@
+#pragma once
+// The line-set CSG of one stabbing pair (docs/theory.md §5.3, §5.4): the stabbing lines of (S', T') form an
+// open cone of Plücker space (with the quadric); each occluder's line set is subtracted by splitting the cone
+// along the occluder's edge hyperplanes, and a piece survives only while it still contains real lines. A
+// piece that no occluder touches proves visibility and yields a witness. Random sample segments come first
+// (a sample found free and re-checked exactly is a witness too) and order the occluders by how much they
+// block.
+#include "kernel/scene.hpp"
+#include "region/stabbing_pair.hpp"
+#include "region/visibility_options.hpp"
+#include "region/witness.hpp"
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+namespace exactvis::region {
+
+struct PairVisibility {
+  std::optional<Witness> witness;  // a free segment from relint S' to relint T', exactly re-checked; none:
+                                   // the pair carries no set of free segments of positive measure
+  VisibilityStats stats;           // this pair's counters (exact_evaluations not counted here)
+};
+
+// Input: the scene, the candidate occluders of the whole query (indices into Scene::triangles), the target
+// triangle's index, one of its stabbing pairs, and the options (samples, seed). Exact; deterministic for a
+// given seed. Cost: the samples, then the CSG (exponential in the number of effective occluders in the worst
+// case, docs/performance.md).
+PairVisibility pair_visibility(const Scene& scene, const std::vector<std::int64_t>& candidates, std::int64_t target,
+                               const StabbingPair& pair, const VisibilityOptions& options);
+
+}  // namespace exactvis::region

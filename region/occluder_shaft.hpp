@@ -1,0 +1,34 @@
+#pragma once
+// The occluders of one stabbing pair (S', T') (docs/theory.md §5.2): the candidate triangles that can meet a
+// segment from S' to T', culled against the shaft conv(S' u T') and clipped to the wedge between the two
+// polygon planes, each with the side functionals of its clipped polygon's edges (the CSG subtracts the lines
+// passing through all of them on one side).
+#include "region/int_vector6.hpp"
+#include "region/stabbing_pair.hpp"
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace exactvis::region {
+
+struct ShaftOccluder {
+  std::int64_t triangle = -1;  // index into Scene::triangles
+  std::array<RationalPoint3, 3> corners;
+  std::array<Point3, 3> corners_d;  // the same corners as input doubles
+  std::vector<IntVec6> edges;  // functionals of the clipped polygon's edges, in loop order
+  int blocked_samples = 0;     // sample segments it blocked (orders the CSG; set by the caller)
+};
+
+// Planes through an edge of one polygon and a vertex of the other that support conv(S' u T'), plus the two
+// polygon planes; each oriented so the hull is on the side value >= 0. Exact.
+std::vector<Plane3> shaft_planes(const StabbingPair& pair);
+
+// The candidates (indices into Scene::triangles, `target` skipped) that are not entirely on the closed outer
+// side of a shaft plane and whose part between the two polygon planes has positive area off both planes
+// (culling the others changes only a measure-zero set of segments, docs/theory.md §5.2), in candidate order.
+// Exact (a filtered side test per corner and plane).
+std::vector<ShaftOccluder> shaft_occluders(const Scene& scene, const std::vector<std::int64_t>& candidates,
+                                           std::int64_t target, const StabbingPair& pair);
+
+}  // namespace exactvis::region

@@ -1,0 +1,130 @@
+#include "region/witness.hpp"
+
+#include "kernel/segment_triangle_intersection.hpp"
+
+namespace exactvis::region {
+namespace {
+
+mpq_class q_at(const RatVec6& x) { return x[0] * x[3] + x[1] * x[4] + x[2] * x[5]; }
+
+RatVec6 lerp(const IntVec6& a, const IntVec6& b, const mpq_class& t) {
+  RatVec6 x;
+  for (int k = 0; k < 6; ++k) x[k] = (1 - t) * a[k] + t * b[k];
+  return x;
+}
+
+// The real line (d, m - (d.m / d.d) d) next to a 6-vector with d != 0.
+std::optional<RatVec6> realify(const RatVec6& x) {
+  const mpq_class dd = x[0] * x[0] + x[1] * x[1] + x[2] * x[2];
+  if (sgn(dd) == 0) return std::nullopt;
+  const mpq_class f = q_at(x) / dd;
+  RatVec6 y = x;
+  for (int k = 0; k < 3; ++k) y[3 + k] -= f * x[k];
+  return y;
+}
+
+RationalPoint3 meet_plane(const RatVec6& line, const Plane3& plane) {
+  const Vec3<Exact> d{Exact(line[0].get_mpq_t()), Exact(line[1].get_mpq_t()), Exact(line[2].get_mpq_t())};
+  const Vec3<Exact> m{Exact(line[3].get_mpq_t()), Exact(line[4].get_mpq_t()), Exact(line[5].get_mpq_t())};
+  const Exact dd = dot(d, d);
+  const Vec3<Exact> dm = cross(d, m);
+  const RationalPoint3 p0{dm.x / dd, dm.y / dd, dm.z / dd};  // point of the line closest to the origin
+  const Exact t = (plane.offset - dot(plane.normal, p0)) / dot(plane.normal, d);
+  return p0 + t * d;
+}
+
+IntVec6 scaled_sum(const IntVec6& a, unsigned shift, const IntVec6& c) {
+  IntVec6 v;
+  for (int k = 0; k < 6; ++k) v[k] = (a[k] << shift) + c[k];
+  return v;
+}
+
+// A point of the open cone K with q of sign `s`, next to the closure point `x` (q(x) has sign s).
+IntVec6 push_inside(const IntVec6& x, const IntVec6& interior, int s) {
+  for (unsigned shift = 1;; shift += 4) {
+    IntVec6 y = scaled_sum(x, shift, interior);
+    if (sgn(plucker_form(y)) == s) return y;
+  }
+}
+
+RationalPoint3 nearest_doubles(const RationalPoint3& p) {
+  return {Exact(CGAL::to_double(p.x)), Exact(CGAL::to_double(p.y)), Exact(CGAL::to_double(p.z))};
+}
+
+}  // namespace
+
+std::optional<Witness> line_in_cone(const PolyhedralCone6& cone, const RealLineTest& test, const StabbingPair& pair,
+                                    std::mt19937_64& rng) {
+  IntVec6 c = interior_point(cone);
+  if (!cone.rays.empty()) {  // vary the interior point between attempts
+    const auto& r = cone.rays[rng() % cone.rays.size()];
+    const long factor = 1 + static_cast<long>(rng() % 7);
+    for (int k = 0; k < 6; ++k) c[k] += r[k] * factor;
+  }
+  const IntVec6 a = push_inside(test.positive_point, c, +1);
+  const IntVec6 b = push_inside(test.negative_point, c, -1);
+  mpq_class lo = 0, hi = 1;
+  for (int iter = 1; iter <= 2048; ++iter) {
+    const mpq_class mid = (lo + hi) / 2;
+    const int s = sgn(q_at(lerp(a, b, mid)));
+    if (s == 0) {
+      lo = hi = mid;
+    } else if (s > 0) {
+      lo = mid;
+    } else {
+      hi = mid;
+    }
+    if (iter % 16 != 0 && s != 0) continue;
+    const auto line = realify(lerp(a, b, lo));
+    if (!line) continue;
+    if (!in_open_cone(cone, to_integer(*line))) {
+      if (s == 0) return std::nullopt;
+      continue;
+    }
+    return Witness{meet_plane(*line, pair.source_plane), meet_plane(*line, pair.target_plane)};
+  }
+  return std::nullopt;
+}
+
+std::optional<Witness> round_witness(const Scene& scene, const CandidateFinder& candidates,
+                                     const std::function<bool(const RationalPoint3&)>& on_source,
+                                     std::int64_t triangle_index, const Witness& w) {
+  const Witness r{nearest_doubles(w.p), nearest_doubles(w.q)};
+  if (r.p == w.p && r.q == w.q) return w;
+  const auto tri = triangle_points(scene, triangle_index);
+  if (!on_source(r.p) || !in_triangle_relative_interior(r.q, tri)) return std::nullopt;
+  const auto cands = candidates(enclosing_box({w.p, w.q, r.p, r.q}));
+  if (!segment_is_free(scene, cands, r.p, r.q, triangle_index)) return std::nullopt;
+  return r;
+}
+
+bool segment_is_free(const Scene& scene, const std::vector<std::int64_t>& candidates, const RationalPoint3& p,
+                     const RationalPoint3& q, std::int64_t skip) {
+  for (const std::int64_t idx : candidates) {
+    if (idx == skip) continue;
+    const auto t = triangle_points(scene, idx);
+    if (open_segment_meets_closed_triangle(p, q, t[0], t[1], t[2])) return false;
+  }
+  return true;
+}
+
+std::optional<Witness> witness_inside_cell(const Scene& scene, const std::vector<std::int64_t>& cands,
+                                           const Polygon3& t_in, const std::array<RationalPoint3, 3>& tri,
+                                           const RationalBox3& cell, std::int64_t target, std::uint64_t seed) {
+  std::mt19937_64 rng(seed ^ 0x5bd1e995u);
+  const Plane3 pl = plane_of({tri[0], tri[1], tri[2]});
+  for (int attempt = 0; attempt < 64; ++attempt) {
+    const RationalPoint3 q = random_interior_point(t_in, rng);
+    for (int s : {+1, -1}) {
+      Exact delta(1);
+      for (int halving = 0; halving < 200; ++halving, delta = delta / 2) {
+        const RationalPoint3 p = q + (Exact(s) * delta) * pl.normal;
+        if (!in_closed_box(p, cell)) continue;
+        if (segment_is_free(scene, cands, p, q, target)) return Witness{p, q};
+      }
+    }
+  }
+  return std::nullopt;
+}
+
+}  // namespace exactvis::region
