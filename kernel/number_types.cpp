@@ -68,6 +68,19 @@ std::pair<double, double> enclosing_interval(const Exact& x) {
   return {std::nextafter(d, -inf), std::nextafter(d, inf)};
 }
 
+std::pair<double, double> tight_interval(const Exact& x) {
+  const mpq_srcptr q = x.mpq();
+  if (mpq_sgn(q) == 0) return {0.0, 0.0};
+  const double d = mpq_get_d(q);  // truncated towards 0
+  if (!std::isfinite(d) || std::fabs(d) < 0x1p-1021) return CGAL::to_interval(x);  // keep subnormals exact
+  // x is a double iff it is a dyadic rational with at most 53 significant bits (then mpq_get_d is exact)
+  const mpz_srcptr num = mpq_numref(q), den = mpq_denref(q);
+  if (mpz_popcount(den) == 1 && mpz_sizeinbase(num, 2) - mpz_scan1(num, 0) <= 53) return {d, d};
+  const double inf = std::numeric_limits<double>::infinity();
+  return mpq_sgn(q) > 0 ? std::pair<double, double>{d, std::nextafter(d, inf)}
+                        : std::pair<double, double>{std::nextafter(d, -inf), d};
+}
+
 bool exact_double(const Exact& x, double* out) {
   const double d = CGAL::to_double(x);
   if (!std::isfinite(d)) return false;

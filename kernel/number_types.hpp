@@ -2,8 +2,8 @@
 // Number types of the exact kernel.
 //
 // Input coordinates are doubles and are read as the exact rationals they denote. Predicates are evaluated
-// first with interval arithmetic (the filter) and, only when the interval contains zero, again with exact
-// rationals (GMP through CGAL). See docs/theory.md, "Arithmetic".
+// by filtered_sign: a semi-static filter in doubles, then interval arithmetic, and only when neither can
+// prove the sign, exact rationals (GMP through CGAL). See docs/theory.md, "Arithmetic".
 #include <CGAL/Gmpq.h>
 #include <CGAL/Gmpz.h>
 #include <CGAL/Interval_nt.h>
@@ -37,6 +37,10 @@ Exact parse_rational(const std::string& text);
 // An interval of doubles containing x: mpq_get_d truncates (error < 1 ulp), widened by one ulp each way.
 // Much cheaper than CGAL::to_interval(Gmpq), which goes through MPFR; the filter only needs an enclosure.
 std::pair<double, double> enclosing_interval(const Exact& x);
+// The smallest interval of doubles containing x ([x, x] iff x is a double): the same pair as
+// CGAL::to_interval(x), computed with mpq_get_d and an exactness test instead of an MPFR rounding (several
+// times faster); outside the normal range of doubles it defers to CGAL::to_interval.
+std::pair<double, double> tight_interval(const Exact& x);
 
 // True iff x is exactly a finite double; then *out receives it.
 bool exact_double(const Exact& x, double* out);

@@ -1,59 +1,73 @@
 #include "kernel/predicates.hpp"
 
+#include "kernel/semi_static_filters.hpp"
+
 #include <CGAL/Mpzf.h>
 
 namespace exactvis {
 namespace {
 
-// Exact number type of the fallback: for double inputs the (division-free) predicates below are evaluated
-// with CGAL::Mpzf, exact and faster than rationals; for rational inputs with Exact.
+// Layers (kernel/filtered_predicate.hpp): on double inputs a hand-written semi-static filter, then
+// intervals, then CGAL::Mpzf (exact for these division-free expressions, faster than rationals); on rational
+// inputs BoundedDouble on the inputs' enclosures, intervals, then Exact.
+
+// orient3d(a, b, c, d) through the three layers, counted by `counter`. side(line(p1,q1), line(p2,q2)) is
+// exactly orient3d(p1, q1, p2, q2) (docs/theory.md section 2), so side_of_lines on points uses it too.
 template <class C>
-using ExactFor = std::conditional_t<std::is_same_v<C, double>, CGAL::Mpzf, Exact>;
+Sign orient3d_counted(PredicateCounter& counter, const Vec3<C>& a, const Vec3<C>& b, const Vec3<C>& c,
+                      const Vec3<C>& d) {
+  auto expr = [&](auto nt) {
+    using NT = typename decltype(nt)::type;
+    const auto A = point_as<NT>(a);
+    return dot(cross(point_as<NT>(b) - A, point_as<NT>(c) - A), point_as<NT>(d) - A);
+  };
+  if constexpr (std::is_same_v<C, double>)
+    return filtered_sign_with<CGAL::Mpzf>(counter, [&] { return orient3d_semi_static(a, b, c, d); }, expr);
+  else
+    return filtered_sign<Exact>(counter, expr);
+}
+
+// Component `axis` of (b - a) x (c - a): orient2d in the coordinates (axis+1, axis+2).
+template <class C>
+Sign cross_component_impl(PredicateCounter& counter, const Vec3<C>& a, const Vec3<C>& b, const Vec3<C>& c,
+                          int axis) {
+  const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+  auto expr = [&](auto nt) {
+    using NT = typename decltype(nt)::type;
+    const NT au = as<NT>(a[u]), av = as<NT>(a[v]);
+    return (as<NT>(b[u]) - au) * (as<NT>(c[v]) - av) - (as<NT>(b[v]) - av) * (as<NT>(c[u]) - au);
+  };
+  if constexpr (std::is_same_v<C, double>)
+    return filtered_sign_with<CGAL::Mpzf>(
+        counter, [&] { return orient2d_semi_static(a[u], a[v], b[u], b[v], c[u], c[v]); }, expr);
+  else
+    return filtered_sign<Exact>(counter, expr);
+}
 
 template <class C>
 Sign side_of_lines_impl(const Vec3<C>& p1, const Vec3<C>& q1, const Vec3<C>& p2, const Vec3<C>& q2) {
   static PredicateCounter counter("side_of_lines");
-  return filtered_sign<ExactFor<C>>(counter, [&](auto nt) {
-    using NT = typename decltype(nt)::type;
-    const auto a = line_through(point_as<NT>(p1), point_as<NT>(q1));
-    const auto b = line_through(point_as<NT>(p2), point_as<NT>(q2));
-    return side(a, b);
-  });
+  return orient3d_counted(counter, p1, q1, p2, q2);
 }
 
 template <class C>
 Sign orient3d_impl(const Vec3<C>& a, const Vec3<C>& b, const Vec3<C>& c, const Vec3<C>& d) {
   static PredicateCounter counter("orient3d");
-  return filtered_sign<ExactFor<C>>(counter, [&](auto nt) {
-    using NT = typename decltype(nt)::type;
-    const auto A = point_as<NT>(a);
-    return dot(cross(point_as<NT>(b) - A, point_as<NT>(c) - A), point_as<NT>(d) - A);
-  });
+  return orient3d_counted(counter, a, b, c, d);
 }
 
 template <class C>
 Sign orient2d_projected_impl(const Vec3<C>& a, const Vec3<C>& b, const Vec3<C>& c, int axis) {
   static PredicateCounter counter("orient2d_projected");
-  return filtered_sign<ExactFor<C>>(counter, [&](auto nt) {
-    using NT = typename decltype(nt)::type;
-    const int u = (axis + 1) % 3, v = (axis + 2) % 3;
-    const NT au = as<NT>(a[u]), av = as<NT>(a[v]);
-    return (as<NT>(b[u]) - au) * (as<NT>(c[v]) - av) - (as<NT>(b[v]) - av) * (as<NT>(c[u]) - au);
-  });
+  return cross_component_impl(counter, a, b, c, axis);
 }
 
 template <class C>
 bool collinear_impl(const Vec3<C>& a, const Vec3<C>& b, const Vec3<C>& c) {
   static PredicateCounter counter("collinear");
   // The cross product (b-a) x (c-a) vanishes iff collinear; test its three components.
-  for (int k = 0; k < 3; ++k) {
-    const Sign s = filtered_sign<ExactFor<C>>(counter, [&](auto nt) {
-      using NT = typename decltype(nt)::type;
-      const auto A = point_as<NT>(a);
-      return cross(point_as<NT>(b) - A, point_as<NT>(c) - A)[k];
-    });
-    if (s != Sign::Zero) return false;
-  }
+  for (int k = 0; k < 3; ++k)
+    if (cross_component_impl(counter, a, b, c, k) != Sign::Zero) return false;
   return true;
 }
 

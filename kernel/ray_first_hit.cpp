@@ -1,45 +1,144 @@
 #include "kernel/ray_first_hit.hpp"
 
+#include "kernel/filtered_predicate.hpp"
 #include "kernel/predicates.hpp"
 
 #include <algorithm>
 #include <optional>
+#include <type_traits>
+#include <utility>
 
 namespace exactvis {
 namespace {
 
-// Smallest s > 0 (or the infimum 0 for a coplanar triangle containing the origin) where the ray meets the
-// closed triangle; nullopt if it does not.
-std::optional<Exact> hit_parameter(const Vec3<Exact>& o, const Vec3<Exact>& d, const std::array<Vec3<Exact>, 3>& t) {
-  const Vec3<Exact> n = cross(t[1] - t[0], t[2] - t[0]);
-  const Exact nd = dot(n, d), no = dot(n, t[0] - o);
-  if (CGAL::sign(nd) != 0) {
-    const Exact s = no / nd;
-    if (CGAL::sign(s) <= 0) return std::nullopt;
-    const Vec3<Exact> x = o + s * d;
-    for (int k = 0; k < 3; ++k)
-      if (CGAL::sign(dot(cross(t[(k + 1) % 3] - t[k], x - t[k]), n)) < 0) return std::nullopt;
-    return s;
+// The ray's origin and direction (exact) with their enclosures, computed once per ray for layers 1 and 2.
+struct RayInput {
+  const Vec3<Exact>& o;
+  const Vec3<Exact>& d;
+  std::array<std::pair<double, double>, 3> oi, di;
+  RayInput(const Vec3<Exact>& origin, const Vec3<Exact>& dir) : o(origin), d(dir) {
+    for (int k = 0; k < 3; ++k) oi[k] = enclosing_interval(o[k]), di[k] = enclosing_interval(d[k]);
   }
-  if (CGAL::sign(no) != 0) return std::nullopt;  // parallel, off the plane
-  // Coplanar: s in [lo, hi] from the three closed half-planes, intersected with s > 0.
+  template <class NT>
+  Vec3<NT> origin() const {
+    if constexpr (std::is_same_v<NT, Exact>) return o;
+    else return {NT(oi[0]), NT(oi[1]), NT(oi[2])};
+  }
+  template <class NT>
+  Vec3<NT> direction() const {
+    if constexpr (std::is_same_v<NT, Exact>) return d;
+    else return {NT(di[0]), NT(di[1]), NT(di[2])};
+  }
+};
+
+template <class NT>
+Vec3<NT> corner_as(const Scene& scene, const SceneTriangle& t, int k) {
+  return point_as<NT>(scene.corner(t, k));
+}
+
+template <class NT>
+Vec3<NT> normal_as(const Scene& scene, const SceneTriangle& t) {
+  const Vec3<NT> a = corner_as<NT>(scene, t, 0);
+  return cross(corner_as<NT>(scene, t, 1) - a, corner_as<NT>(scene, t, 2) - a);
+}
+
+// Named, counted predicates of the ray against triangle t with normal n = (t1 - t0) x (t2 - t0)
+// (docs/theory.md section 1, counters; section 6, "Maximal free segments").
+
+// sign(n . d): zero iff the ray is parallel to t's plane.
+Sign plane_dir_sign(const RayInput& r, const Scene& scene, const SceneTriangle& t) {
+  static PredicateCounter counter("ray_plane_dir");
+  return filtered_sign(counter, [&](auto nt) {
+    using NT = typename decltype(nt)::type;
+    return dot(normal_as<NT>(scene, t), r.direction<NT>());
+  });
+}
+
+// sign(n . (t0 - o)): the side of t's plane the origin lies on (negated); the hit parameter is
+// s = n . (t0 - o) / n . d.
+Sign plane_offset_sign(const RayInput& r, const Scene& scene, const SceneTriangle& t) {
+  static PredicateCounter counter("ray_plane_offset");
+  return filtered_sign(counter, [&](auto nt) {
+    using NT = typename decltype(nt)::type;
+    return dot(normal_as<NT>(scene, t), corner_as<NT>(scene, t, 0) - r.origin<NT>());
+  });
+}
+
+// sign(det[t_k - o, t_k+1 - o, d]). For a ray not parallel to the plane it equals sign(n . d) times the sign
+// of the barycentric coordinate, opposite t_k+2, of the point where the ray's line meets the plane.
+Sign edge_side_sign(const RayInput& r, const Scene& scene, const SceneTriangle& t, int k) {
+  static PredicateCounter counter("ray_edge_side");
+  return filtered_sign(counter, [&](auto nt) {
+    using NT = typename decltype(nt)::type;
+    const Vec3<NT> o = r.origin<NT>();
+    return dot(cross(corner_as<NT>(scene, t, k) - o, corner_as<NT>(scene, t, (k + 1) % 3) - o), r.direction<NT>());
+  });
+}
+
+// For t coplanar with the ray, edge k = t_k+1 - t_k: `of_direction` false gives sign(((e x (o - t_k)) . n),
+// the origin's side of the edge's line in the plane; true gives sign((e x d) . n), the direction's.
+Sign coplanar_edge_sign(const RayInput& r, const Scene& scene, const SceneTriangle& t, int k, bool of_direction) {
+  static PredicateCounter counter("ray_coplanar_edge");
+  return filtered_sign(counter, [&](auto nt) {
+    using NT = typename decltype(nt)::type;
+    const Vec3<NT> tk = corner_as<NT>(scene, t, k);
+    const Vec3<NT> e = corner_as<NT>(scene, t, (k + 1) % 3) - tk;
+    const Vec3<NT> v = of_direction ? r.direction<NT>() : r.origin<NT>() - tk;
+    return dot(cross(e, v), normal_as<NT>(scene, t));
+  });
+}
+
+// sign(s_t - s_u) times sign(nd_t nd_u), s = no / nd, from no_t nd_u - no_u nd_t (no division).
+Sign hit_order_sign(const RayInput& r, const Scene& scene, const SceneTriangle& t, const SceneTriangle& u) {
+  static PredicateCounter counter("ray_hit_order");
+  return filtered_sign(counter, [&](auto nt) {
+    using NT = typename decltype(nt)::type;
+    const Vec3<NT> o = r.origin<NT>(), d = r.direction<NT>();
+    const Vec3<NT> nt_ = normal_as<NT>(scene, t), nu = normal_as<NT>(scene, u);
+    return dot(nt_, corner_as<NT>(scene, t, 0) - o) * dot(nu, d) - dot(nu, corner_as<NT>(scene, u, 0) - o) * dot(nt_, d);
+  });
+}
+
+// A triangle the ray's line crosses (not parallel to the plane) at s > 0 inside the closed triangle.
+struct Crossing {
+  std::int64_t triangle;
+  Sign nd;  // sign(n . d)
+};
+
+// Does the open ray cross t (not parallel)? Decided by the predicates only, nothing constructed.
+std::optional<Crossing> crossing(const RayInput& r, const Scene& scene, std::int64_t ti, Sign nd) {
+  const SceneTriangle& t = scene.triangles[ti];
+  if (plane_offset_sign(r, scene, t) != nd) return std::nullopt;  // s <= 0
+  const Sign opposite = nd == Sign::Positive ? Sign::Negative : Sign::Positive;
+  for (int k = 0; k < 3; ++k)
+    if (edge_side_sign(r, scene, t, k) == opposite) return std::nullopt;  // outside edge k's side
+  return Crossing{ti, nd};
+}
+
+// For t coplanar with the ray: the smallest s > 0, or the infimum 0 if the closed triangle contains the
+// origin, where the ray meets t; nullopt if it does not. The signs are predicates; the entry and exit
+// parameters -f0 / f1 are exact rationals compared exactly.
+std::optional<Exact> coplanar_hit(const RayInput& r, const Scene& scene, const SceneTriangle& t) {
+  const RationalPoint3 c[3] = {to_rational(scene.corner(t, 0)), to_rational(scene.corner(t, 1)),
+                               to_rational(scene.corner(t, 2))};
+  const Vec3<Exact> n = cross(c[1] - c[0], c[2] - c[0]);
   std::optional<Exact> lo, hi;
   for (int k = 0; k < 3; ++k) {
-    const Vec3<Exact> e = t[(k + 1) % 3] - t[k];
-    const Exact f0 = dot(cross(e, o - t[k]), n), f1 = dot(cross(e, d), n);
-    if (CGAL::sign(f1) == 0) {
-      if (CGAL::sign(f0) < 0) return std::nullopt;
+    const Sign s1 = coplanar_edge_sign(r, scene, t, k, true);
+    if (s1 == Sign::Zero) {
+      if (coplanar_edge_sign(r, scene, t, k, false) == Sign::Negative) return std::nullopt;
       continue;
     }
-    const Exact r = -f0 / f1;
-    if (CGAL::sign(f1) > 0) {
-      if (!lo || r > *lo) lo = r;
+    const Vec3<Exact> e = c[(k + 1) % 3] - c[k];
+    const Exact rk = -dot(cross(e, r.o - c[k]), n) / dot(cross(e, r.d), n);
+    if (s1 == Sign::Positive) {
+      if (!lo || rk > *lo) lo = rk;
     } else {
-      if (!hi || r < *hi) hi = r;
+      if (!hi || rk < *hi) hi = rk;
     }
   }
-  const Exact entry = (lo && CGAL::sign(*lo) > 0) ? *lo : Exact(0);
-  if (hi && (*hi < entry || CGAL::sign(*hi) <= 0)) return std::nullopt;
+  const Exact entry = (lo && exact_sign(*lo) == Sign::Positive) ? *lo : Exact(0);
+  if (hi && (*hi < entry || exact_sign(*hi) != Sign::Positive)) return std::nullopt;
   return entry;
 }
 
@@ -52,14 +151,14 @@ RayHit ray_first_hit(const Scene& scene, const TriangleIndex& index, const Box3&
   // Exit parameter from the scene box.
   std::optional<Exact> exit;
   for (int k = 0; k < 3; ++k) {
-    const int sd = CGAL::sign(dir[k]);
-    if (sd == 0) continue;
-    const double face = sd > 0 ? (k == 0 ? box.hi.x : k == 1 ? box.hi.y : box.hi.z)
-                               : (k == 0 ? box.lo.x : k == 1 ? box.lo.y : box.lo.z);
+    const Sign sd = exact_sign(dir[k]);
+    if (sd == Sign::Zero) continue;
+    const double face = sd == Sign::Positive ? (k == 0 ? box.hi.x : k == 1 ? box.hi.y : box.hi.z)
+                                             : (k == 0 ? box.lo.x : k == 1 ? box.lo.y : box.lo.z);
     const Exact s = (Exact(face) - origin[k]) / dir[k];
     if (!exit || s < *exit) exit = s;
   }
-  if (!exit || CGAL::sign(*exit) <= 0) return best;
+  if (!exit || exact_sign(*exit) != Sign::Positive) return best;
   // Candidates: triangles whose boxes meet one of 32 outward-rounded boxes covering the ray inside the box.
   std::vector<std::int64_t> cand;
   const int pieces = 32;
@@ -78,46 +177,37 @@ RayHit ray_first_hit(const Scene& scene, const TriangleIndex& index, const Box3&
   }
   std::sort(cand.begin(), cand.end());
   cand.erase(std::unique(cand.begin(), cand.end()), cand.end());
-  // Interval filter: a candidate is certainly missed if a sign is certainly wrong; the rest are tested
-  // exactly in order of their interval lower bound, stopping once that bound exceeds the best exact hit.
-  std::vector<std::pair<double, std::int64_t>> maybe;
-  {
-    CGAL::Protect_FPU_rounding<true> guard;
-    auto iv = [](const Point3& q) { return Vec3<Interval>(Interval(q.x), Interval(q.y), Interval(q.z)); };
-    const Vec3<Interval> o(CGAL::to_interval(origin.x), CGAL::to_interval(origin.y), CGAL::to_interval(origin.z));
-    const Vec3<Interval> d(CGAL::to_interval(dir.x), CGAL::to_interval(dir.y), CGAL::to_interval(dir.z));
-    for (const std::int64_t ti : cand) {
-      const auto& t = scene.triangles[ti];
-      const Vec3<Interval> a = iv(scene.corner(t, 0)), b = iv(scene.corner(t, 1)), c = iv(scene.corner(t, 2));
-      const Vec3<Interval> n = cross(b - a, c - a);
-      const Interval nd = dot(n, d), no = dot(n, a - o);
-      double lower = 0;  // lower bound of the hit parameter
-      if (nd.inf() > 0 || nd.sup() < 0) {
-        const Interval si = no / nd;
-        if (si.sup() <= 0) continue;  // certainly s <= 0
-        const Vec3<Interval> x = o + si * d;
-        bool out = false;
-        const Vec3<Interval> tri[3] = {a, b, c};
-        for (int k = 0; k < 3 && !out; ++k)
-          out = dot(cross(tri[(k + 1) % 3] - tri[k], x - tri[k]), n).sup() < 0;
-        if (out) continue;
-        lower = std::max(0.0, si.inf());
-      } else if (no.inf() > 0 || no.sup() < 0) {
-        if (nd.inf() == 0 && nd.sup() == 0) continue;  // exactly parallel and off the plane
-      }
-      maybe.emplace_back(lower, ti);
+  // Every candidate is decided by the counted predicates above; among the crossed triangles the nearest is
+  // found by comparing hit parameters without constructing them (ties: the lowest index, as the candidates
+  // are in index order), and only the winner's parameter is constructed. Coplanar triangles (rare) construct
+  // their entry parameter exactly.
+  const RayInput r(origin, dir);
+  std::optional<Crossing> nearest;
+  std::vector<std::pair<std::int64_t, Exact>> coplanar;
+  for (const std::int64_t ti : cand) {
+    const SceneTriangle& t = scene.triangles[ti];
+    const Sign nd = plane_dir_sign(r, scene, t);
+    if (nd == Sign::Zero) {
+      if (plane_offset_sign(r, scene, t) != Sign::Zero) continue;  // parallel, off the plane
+      if (auto s = coplanar_hit(r, scene, t)) coplanar.emplace_back(ti, std::move(*s));
+      continue;
     }
+    const auto c = crossing(r, scene, ti, nd);
+    if (!c) continue;
+    // s_c < s_nearest iff order * nd_c * nd_nearest < 0
+    if (!nearest ||
+        hit_order_sign(r, scene, t, scene.triangles[nearest->triangle]) * c->nd * nearest->nd == Sign::Negative)
+      nearest = c;
   }
-  std::sort(maybe.begin(), maybe.end());
-  for (const auto& [lower, ti] : maybe) {
-    if (best.triangle >= 0 && Exact(lower) > best.s) break;
-    const auto& t = scene.triangles[ti];
-    const auto s = hit_parameter(origin, dir,
-                                 {to_rational(scene.corner(t, 0)), to_rational(scene.corner(t, 1)),
-                                  to_rational(scene.corner(t, 2))});
-    if (!s) continue;
-    if (best.triangle < 0 || *s < best.s || (*s == best.s && ti < best.triangle)) best = {static_cast<int>(ti), *s};
+  if (nearest) {
+    const RationalPoint3 a = to_rational(scene.corner(scene.triangles[nearest->triangle], 0));
+    const RationalPoint3 b = to_rational(scene.corner(scene.triangles[nearest->triangle], 1));
+    const RationalPoint3 c = to_rational(scene.corner(scene.triangles[nearest->triangle], 2));
+    const Vec3<Exact> n = cross(b - a, c - a);
+    best = {static_cast<int>(nearest->triangle), dot(n, a - origin) / dot(n, dir)};
   }
+  for (auto& [ti, s] : coplanar)
+    if (best.triangle < 0 || s < best.s || (s == best.s && ti < best.triangle)) best = {static_cast<int>(ti), s};
   return best;
 }
 

@@ -1,6 +1,11 @@
 #include "region/occluder_shaft.hpp"
 
+#include "kernel/filtered_predicate.hpp"
+
+#include <array>
 #include <optional>
+#include <type_traits>
+#include <utility>
 
 namespace exactvis::region {
 
@@ -17,9 +22,9 @@ std::vector<Plane3> shaft_planes(const StabbingPair& pair) {
         const Plane3 pl = plane_through(a, b, c);
         bool pos = false, neg = false;
         for (const auto& p : pts) {
-          const int s = CGAL::sign(pl.value(p));
-          pos |= s > 0;
-          neg |= s < 0;
+          const Sign s = plane_side(pl, p);
+          pos |= s == Sign::Positive;
+          neg |= s == Sign::Negative;
         }
         if (pos && neg) continue;
         planes.push_back(neg ? pl.flipped() : pl);
@@ -33,22 +38,28 @@ std::vector<Plane3> shaft_planes(const StabbingPair& pair) {
 
 namespace {
 
-// A shaft plane with its coefficients also as intervals, for a filtered side test without conversions.
-struct FilteredPlane {
+// A shaft plane tested against many scene corners: its coefficients' enclosures are computed once. The side
+// test is the named, counted predicate `shaft_plane_side` (the three layers of kernel/filtered_predicate.hpp;
+// the same value as plane_side, whose generic form converts the coefficients on every call).
+struct ShaftPlane {
   Plane3 exact;
-  Interval a, b, c, d;
-  explicit FilteredPlane(const Plane3& p)
-      : exact(p), a(enclosing_interval(p.normal.x)), b(enclosing_interval(p.normal.y)),
-        c(enclosing_interval(p.normal.z)), d(enclosing_interval(p.offset)) {}
-  // Exact: is plane.value(x) > 0?
-  bool positive(const Point3& x) const {
-    {
-      CGAL::Protect_FPU_rounding<true> guard;
-      const Interval v = a * x.x + b * x.y + c * x.z - d;
-      if (v.inf() > 0) return true;
-      if (v.sup() <= 0) return false;
-    }
-    return plane_side(exact, x) == Sign::Positive;
+  std::array<std::pair<double, double>, 4> enclosures;  // normal x, y, z and offset
+  explicit ShaftPlane(const Plane3& p)
+      : exact(p),
+        enclosures{enclosing_interval(p.normal.x), enclosing_interval(p.normal.y), enclosing_interval(p.normal.z),
+                   enclosing_interval(p.offset)} {}
+  // sign(exact.value(x))
+  Sign side(const Point3& x) const {
+    static PredicateCounter counter("shaft_plane_side");
+    return filtered_sign(counter, [&](auto nt) {
+      using NT = typename decltype(nt)::type;
+      if constexpr (std::is_same_v<NT, Exact>) {
+        return exact.value(to_rational(x));
+      } else {
+        return NT(enclosures[0]) * NT(x.x) + NT(enclosures[1]) * NT(x.y) + NT(enclosures[2]) * NT(x.z) -
+               NT(enclosures[3]);
+      }
+    });
   }
 };
 
@@ -70,7 +81,7 @@ std::optional<ShaftOccluder> clipped_occluder(const std::array<RationalPoint3, 3
 
 std::vector<ShaftOccluder> shaft_occluders(const Scene& scene, const std::vector<std::int64_t>& candidates,
                                            std::int64_t target, const StabbingPair& pair) {
-  std::vector<FilteredPlane> planes;
+  std::vector<ShaftPlane> planes;
   for (const auto& p : shaft_planes(pair)) planes.emplace_back(p);
   std::vector<ShaftOccluder> out;
   for (const std::int64_t idx : candidates) {
@@ -80,7 +91,8 @@ std::vector<ShaftOccluder> shaft_occluders(const Scene& scene, const std::vector
     for (const auto& pl : planes) {
       // Entirely on the closed outer side of a supporting plane: meets the shaft at most in that plane,
       // which only a measure-zero set of stabbing segments touches (docs/theory.md §5.2).
-      if (!pl.positive(scene.corner(st, 0)) && !pl.positive(scene.corner(st, 1)) && !pl.positive(scene.corner(st, 2))) {
+      if (pl.side(scene.corner(st, 0)) != Sign::Positive && pl.side(scene.corner(st, 1)) != Sign::Positive &&
+          pl.side(scene.corner(st, 2)) != Sign::Positive) {
         culled = true;
         break;
       }

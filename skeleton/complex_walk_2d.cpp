@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <exception>
+#include <tuple>
+#include <limits>
 #include <stdexcept>
 
 namespace exactvis {
@@ -18,6 +20,20 @@ int half_of(const Point2& from, const Point2& to) {
   return dx_sign(from, to) == Sign::Positive ? 0 : 1;
 }
 
+// The bounding box of the interval enclosures of some points: a point whose enclosure misses it is certainly
+// outside their convex hull (exact comparisons of doubles).
+struct EnclosureBox {
+  double lo_x = std::numeric_limits<double>::infinity(), hi_x = -std::numeric_limits<double>::infinity();
+  double lo_y = std::numeric_limits<double>::infinity(), hi_y = -std::numeric_limits<double>::infinity();
+  void add(const Point2& p) {
+    lo_x = std::min(lo_x, p.ix.inf()), hi_x = std::max(hi_x, p.ix.sup());
+    lo_y = std::min(lo_y, p.iy.inf()), hi_y = std::max(hi_y, p.iy.sup());
+  }
+  bool meets(const Point2& p) const {
+    return p.ix.sup() >= lo_x && p.ix.inf() <= hi_x && p.iy.sup() >= lo_y && p.iy.inf() <= hi_y;
+  }
+};
+
 // A direction given by two points (vector to - from), never constructed.
 struct Dir {
   const Point2* from = nullptr;
@@ -28,10 +44,48 @@ struct Dir {
 // The line direction of p - q taken in [0, pi).
 Dir line_dir(const Point2& q, const Point2& p) { return half_of(q, p) == 0 ? Dir{&q, &p} : Dir{&p, &q}; }
 
+// Sign of cross(u.to - u.from, v.to - v.from), the walk's direction comparison, through the three layers
+// (counter "walk_cross2"). Directions spanned by the same two points (in either order) are parallel: 0
+// without evaluating (an exact zero that no filter can certify when the coordinates' products are not
+// representable, so it would take the exact path). `doubles`: every coordinate involved is a double (known
+// for a whole query), so layer 1 is the kernel's semi-static filter without per-call tests.
+Sign cross_dir(const Dir& u, const Dir& v, bool doubles) {
+  if ((u.from == v.from && u.to == v.to) || (u.from == v.to && u.to == v.from)) return Sign::Zero;
+  static PredicateCounter counter("walk_cross2");
+  const Point2 &u0 = *u.from, &u1 = *u.to, &v0 = *v.from, &v1 = *v.to;
+  auto expr = [&](auto nt) {
+    using NT = typename decltype(nt)::type;
+    return (px<NT>(u1) - px<NT>(u0)) * (py<NT>(v1) - py<NT>(v0)) - (py<NT>(u1) - py<NT>(u0)) * (px<NT>(v1) - px<NT>(v0));
+  };
+  return filtered_sign_with(counter, [&]() -> std::optional<Sign> {
+    if (doubles) return cross2d_semi_static(u0.ax, u0.ay, u1.ax, u1.ay, v0.ax, v0.ay, v1.ax, v1.ay);
+    return expr(NumberTag<BoundedDouble>{}).certified_sign();
+  }, expr);
+}
+
+// The point's coordinates are doubles (point enclosures; then ax, ay are them).
+bool double_coordinates(const Point2& p) { return p.ix.inf() == p.ix.sup() && p.iy.inf() == p.iy.sup(); }
+
 // Order of two line directions taken in [0, pi) (as line_dir gives them): one cross product decides.
-int compare_dir(const Dir& u, const Dir& v) {
-  const Sign c = cross_sign(*u.from, *u.to, *v.from, *v.to);
+int compare_dir(const Dir& u, const Dir& v, bool doubles) {
+  const Sign c = cross_dir(u, v, doubles);
   return c == Sign::Positive ? -1 : (c == Sign::Negative ? 1 : 0);
+}
+
+// Is the oriented direction t within the closed range of tangent directions of convex vertex v, oriented
+// as in the complex's construction: from prev v - v to v - next v, counterclockwise (< pi)? The sample
+// direction of a complex edge is oriented this way, so its end_objects[1] lies ahead along such a t.
+bool in_tangent_range(const Scene2D& s, int v, const Dir& t, bool doubles) {
+  const auto& P = s.points;
+  return cross_dir(Dir{&P[v], &P[s.prev[v]]}, t, doubles) != Sign::Negative &&
+         cross_dir(t, Dir{&P[s.next[v]], &P[v]}, doubles) != Sign::Negative;
+}
+
+// Oriented tangent direction at v of bitangent i (within v's range), as the vertex pair (from, to).
+std::pair<int, int> bitangent_dir_at(const Scene2D& s, const VisibilityComplex2D& cx, int v, int i) {
+  const Bitangent2D& b = cx.graph.bitangents[i];
+  const int w = b.a == v ? b.b : b.a;
+  return in_tangent_range(s, v, Dir{&s.points[v], &s.points[w]}, false) ? std::pair{v, w} : std::pair{w, v};
 }
 
 }  // namespace
@@ -70,6 +124,7 @@ ComplexWalkIndex2D complex_walk_index(const Scene2D& scene, const VisibilityComp
     });
     list.erase(std::unique(list.begin(), list.end(), [](const auto& x, const auto& y) { return x.vertex == y.vertex; }),
                list.end());
+    for (auto& x : list) x.half = half_of(P[v], P[x.vertex]);
   }
   ix.pivot_edges.resize(n);
   for (std::size_t j = 0; j < cx.edges.size(); ++j) {
@@ -81,7 +136,16 @@ ComplexWalkIndex2D complex_walk_index(const Scene2D& scene, const VisibilityComp
     for (int v : e.pivots) {
       cand.push_back(v);
       auto& pe = ix.pivot_edges[v];
-      if (pe.empty() || pe.back() != static_cast<int>(j)) pe.push_back(static_cast<int>(j));
+      if (!pe.empty() && pe.back().edge == static_cast<int>(j)) continue;
+      ComplexWalkIndex2D::PivotEdge p;
+      p.edge = static_cast<int>(j);
+      auto at_v = [&](int t) { return t >= 0 && (B[t].a == v || B[t].b == v); };
+      if (at_v(e.vertices[0])) std::tie(p.start_from, p.start_to) = bitangent_dir_at(scene, cx, v, e.vertices[0]);
+      if (at_v(e.vertices[1])) std::tie(p.end_from, p.end_to) = bitangent_dir_at(scene, cx, v, e.vertices[1]);
+      if (p.start_from >= 0 && p.end_from >= 0)
+        p.narrow = cross_dir(Dir{&P[p.start_from], &P[p.start_to]}, Dir{&P[p.end_from], &P[p.end_to]}, false) ==
+                   Sign::Positive;
+      pe.push_back(p);
     }
   }
   for (auto& [pair, cand] : ix.candidates) {
@@ -90,6 +154,8 @@ ComplexWalkIndex2D complex_walk_index(const Scene2D& scene, const VisibilityComp
   }
   ix.object_edges.resize(scene.num_objects);
   for (int e = 0; e < n; ++e) ix.object_edges[scene.object_of(e)].push_back(e);
+  ix.location = point_location_2d(scene);
+  ix.double_coordinates = std::all_of(P.begin(), P.end(), double_coordinates);
   return ix;
 }
 
@@ -101,15 +167,16 @@ struct Walk {
   const Point2& q;
   int n;             // vertices of the unframed scene; ids >= n are frame corners
   std::vector<int> frame_edges;
+  bool doubles = false;  // every coordinate (scene, frame, q) is a double: see cross_dir
 
   const std::vector<Point2>& P() const { return s.points; }
   int object_or_infinity(int e) const { return e >= n ? -1 : s.object_of(e); }
 
-  // The edge hit by the ray from q in direction R = (+-1, 0) turned clockwise by an infinitesimal angle:
-  // O(n), edges whose y-range misses q's or lying wholly behind q rejected first from interval enclosures.
-  int edge_hit_before(const Dir& R, bool east) const {
+  // The frame edge hit by the ray from q in direction R = (+-1, 0) turned clockwise by an infinitesimal
+  // angle (when the ray meets no scene edge).
+  int frame_edge_hit_before(const Dir& R, bool east) const {
     int best = -1;
-    for (int e = 0; e < s.num_vertices(); ++e) {
+    for (int e : frame_edges) {
       int a = e, b = s.next[e];
       const Point2 &pa = P()[a], &pb = P()[b];
       if (std::max(pa.iy.sup(), pb.iy.sup()) < q.iy.inf() || std::min(pa.iy.inf(), pb.iy.inf()) > q.iy.sup()) continue;
@@ -141,8 +208,8 @@ struct Walk {
   // Hit point of the line through q in direction R with edge e (an endpoint if it lies on the line).
   Point2 hit(int e, const Dir& R) const {
     const Point2 &a = P()[e], &b = P()[s.next[e]];
-    if (cross_sign(*R.from, *R.to, q, a) == Sign::Zero) return a;
-    if (cross_sign(*R.from, *R.to, q, b) == Sign::Zero) return b;
+    if (cross_dir(R, Dir{&q, &a}, doubles) == Sign::Zero) return a;
+    if (cross_dir(R, Dir{&q, &b}, doubles) == Sign::Zero) return b;
     return line_intersection(q, *R.from, *R.to, a, b);
   }
 
@@ -151,9 +218,9 @@ struct Walk {
   // the one of larger angle from R if both do; -1 if none (the ray passes w).
   int blocking_edge(int w, const Dir& R) const {
     const int o1 = s.next[w], o2 = s.prev[w];
-    const bool l1 = cross_sign(*R.from, *R.to, P()[w], P()[o1]) == Sign::Positive;
-    const bool l2 = cross_sign(*R.from, *R.to, P()[w], P()[o2]) == Sign::Positive;
-    if (l1 && l2) return cross_sign(P()[w], P()[o1], P()[w], P()[o2]) == Sign::Positive ? o2 : w;
+    const bool l1 = cross_dir(R, Dir{&P()[w], &P()[o1]}, doubles) == Sign::Positive;
+    const bool l2 = cross_dir(R, Dir{&P()[w], &P()[o2]}, doubles) == Sign::Positive;
+    if (l1 && l2) return cross_dir(Dir{&P()[w], &P()[o1]}, Dir{&P()[w], &P()[o2]}, doubles) == Sign::Positive ? o2 : w;
     if (l1) return w;
     if (l2) return o2;
     return -1;
@@ -162,14 +229,20 @@ struct Walk {
   // Neighbours of v (visibility graph and ring) in exactly direction R: [first, last) nearest first.
   std::pair<std::size_t, std::size_t> neighbours_in(int v, const Dir& R) const {
     const auto& list = ix.neighbours[v];
-    auto cmp = [&](int x) { return compare_angle(P()[v], P()[x], *R.from, *R.to); };
+    const int hr = half_of(*R.from, *R.to);
+    // compare_angle(v -> x, R) with the halves of the neighbours' directions stored in the index
+    auto cmp = [&](const ComplexWalkIndex2D::Neighbour& x) {
+      if (x.half != hr) return x.half < hr ? -1 : 1;
+      const Sign c = cross_dir(Dir{&P()[v], &P()[x.vertex]}, R, doubles);
+      return c == Sign::Positive ? -1 : (c == Sign::Negative ? 1 : 0);
+    };
     std::size_t lo = 0, hi = list.size();
     while (lo < hi) {  // first with direction >= R
       const std::size_t mid = (lo + hi) / 2;
-      if (cmp(list[mid].vertex) < 0) lo = mid + 1; else hi = mid;
+      if (cmp(list[mid]) < 0) lo = mid + 1; else hi = mid;
     }
     std::size_t end = lo;
-    while (end < list.size() && cmp(list[end].vertex) == 0) ++end;
+    while (end < list.size() && cmp(list[end]) == 0) ++end;
     return {lo, end};
   }
 
@@ -187,46 +260,24 @@ struct Walk {
     return w;
   }
 
-  // Is the oriented direction t within the closed range of tangent directions of convex vertex v, oriented
-  // as in the complex's construction: from prev v - v to v - next v, counterclockwise (< pi)? The sample
-  // direction of a complex edge is oriented this way, so its end_objects[1] lies ahead along such a t.
-  bool in_range(int v, const Dir& t) const {
-    return cross_sign(P()[v], P()[s.prev[v]], *t.from, *t.to) != Sign::Negative &&
-           cross_sign(*t.from, *t.to, P()[s.next[v]], P()[v]) != Sign::Negative;
-  }
-
-  // Oriented tangent direction at v of bitangent i (within v's range).
-  Dir bitangent_dir(int v, int i) const {
-    const Bitangent2D& b = ix.complex->graph.bitangents[i];
-    const int w = b.a == v ? b.b : b.a;
-    const Dir d{&P()[v], &P()[w]};
-    return in_range(v, d) ? d : d.reversed();
-  }
-
   // Object met beyond silhouette vertex y along R (tangent at y, no visible vertex on the ray beyond y and
   // R not a bitangent direction at y): from the complex edge of y's tangent family holding R.
   int object_beyond(int y, const Dir& R) const {
-    const bool forward = in_range(y, R);
+    const bool forward = in_tangent_range(s, y, R, doubles);
     const Dir t = forward ? R : R.reversed();
-    if (!forward && !in_range(y, t)) throw std::logic_error("complex walk: silhouette vertex not tangent (bug)");
-    for (int j : ix.pivot_edges[y]) {
-      const ComplexEdge2D& e = ix.complex->edges[j];
-      const auto& B = ix.complex->graph.bitangents;
-      const bool s_at = e.vertices[0] >= 0 && (B[e.vertices[0]].a == y || B[e.vertices[0]].b == y);
-      const bool e_at = e.vertices[1] >= 0 && (B[e.vertices[1]].a == y || B[e.vertices[1]].b == y);
+    if (!forward && !in_tangent_range(s, y, t, doubles))
+      throw std::logic_error("complex walk: silhouette vertex not tangent (bug)");
+    for (const ComplexWalkIndex2D::PivotEdge& p : ix.pivot_edges[y]) {
+      const ComplexEdge2D& e = ix.complex->edges[p.edge];
       bool ok = true;
-      if (s_at && e_at) {
-        const Dir u0 = bitangent_dir(y, e.vertices[0]), u1 = bitangent_dir(y, e.vertices[1]);
-        const bool after0 = cross_sign(*u0.from, *u0.to, *t.from, *t.to) == Sign::Positive;
-        const bool before1 = cross_sign(*t.from, *t.to, *u1.from, *u1.to) == Sign::Positive;
-        ok = cross_sign(*u0.from, *u0.to, *u1.from, *u1.to) == Sign::Positive ? (after0 && before1)
-                                                                            : (after0 || before1);
-      } else if (s_at) {
-        const Dir u0 = bitangent_dir(y, e.vertices[0]);
-        ok = cross_sign(*u0.from, *u0.to, *t.from, *t.to) == Sign::Positive;
-      } else if (e_at) {
-        const Dir u1 = bitangent_dir(y, e.vertices[1]);
-        ok = cross_sign(*t.from, *t.to, *u1.from, *u1.to) == Sign::Positive;
+      if (p.start_from >= 0 && p.end_from >= 0) {
+        const bool after0 = cross_dir(Dir{&P()[p.start_from], &P()[p.start_to]}, t, doubles) == Sign::Positive;
+        const bool before1 = cross_dir(t, Dir{&P()[p.end_from], &P()[p.end_to]}, doubles) == Sign::Positive;
+        ok = p.narrow ? (after0 && before1) : (after0 || before1);
+      } else if (p.start_from >= 0) {
+        ok = cross_dir(Dir{&P()[p.start_from], &P()[p.start_to]}, t, doubles) == Sign::Positive;
+      } else if (p.end_from >= 0) {
+        ok = cross_dir(t, Dir{&P()[p.end_from], &P()[p.end_to]}, doubles) == Sign::Positive;
       }
       if (ok) return e.end_objects[forward ? 1 : 0];
     }
@@ -246,30 +297,35 @@ struct Walk {
         y = ix.neighbours[y][lo].vertex;
         continue;
       }
-      // a bitangent through y with its other end behind y: its stored end beyond y
-      SegmentEnd2D end;
+      // a bitangent through y with its other end behind y: its stored end beyond y (kind and id only: the
+      // contact point is not needed, and a SegmentEnd2D would allocate its exact point)
+      SegmentEnd2D::Kind kind = SegmentEnd2D::Infinity;
+      int id = -1;
       bool have_end = false;
       const auto [blo, bhi] = neighbours_in(y, R.reversed());
       for (std::size_t k = blo; k < bhi && !have_end; ++k) {
         const int t = ix.neighbours[y][k].bitangent;
         if (t < 0) continue;
         const Bitangent2D& b = ix.complex->graph.bitangents[t];
-        end = b.a == y ? b.end_a : b.end_b;
+        const SegmentEnd2D& end = b.a == y ? b.end_a : b.end_b;
+        kind = end.kind, id = end.id;
         have_end = true;
       }
       if (!have_end) {
         const int obj = object_beyond(y, R);
-        end = first_contact_feature(s, y, *R.from, *R.to, obj < 0 ? &frame_edges : &ix.object_edges[obj]);
+        const SegmentEnd2D end =
+            first_contact_feature(s, y, *R.from, *R.to, obj < 0 ? &frame_edges : &ix.object_edges[obj]);
         if (end.kind == SegmentEnd2D::Infinity)
           throw std::logic_error("complex walk: the ray misses the object the complex names (bug)");
+        kind = end.kind, id = end.id;
       }
-      if (end.kind == SegmentEnd2D::EdgeInterior) return end.id;
-      if (end.kind == SegmentEnd2D::Vertex && end.id != y) {
-        y = end.id;
+      if (kind == SegmentEnd2D::EdgeInterior) return id;
+      if (kind == SegmentEnd2D::Vertex && id != y) {
+        y = id;
         continue;
       }
-      if (end.kind == SegmentEnd2D::Infinity) {
-        end = first_contact_feature(s, y, *R.from, *R.to, &frame_edges);
+      if (kind == SegmentEnd2D::Infinity) {
+        const SegmentEnd2D end = first_contact_feature(s, y, *R.from, *R.to, &frame_edges);
         if (end.kind == SegmentEnd2D::EdgeInterior) return end.id;
         if (end.kind == SegmentEnd2D::Vertex) {
           y = end.id;
@@ -289,19 +345,30 @@ VisibilityPolygon2D visibility_polygon_in_complex(const ComplexWalkIndex2D& ix, 
   const int n = ix.scene->num_vertices();
   if (s.frame_ring < 0 || s.num_vertices() != n + 4 || s.rings[s.frame_ring].first != n)
     throw std::invalid_argument("complex walk needs with_frame() of the scene the complex was built on");
-  if (on_boundary(s, q)) throw std::invalid_argument("query point lies on a polygon boundary");
-  if (inside_obstacle(s, q)) throw std::invalid_argument("query point lies inside an object or outside the frame");
+  const Ring2D& frame = s.rings[s.frame_ring];
+  const LocatedPoint2D at = locate_point(ix.location, q);
+  if (on_ring(s.points, frame.first, frame.size, q) || at.on_boundary)
+    throw std::invalid_argument("query point lies on a polygon boundary");
+  if (!frame_contains(s, q) || at.inside_object)
+    throw std::invalid_argument("query point lies inside an object or outside the frame");
   Walk W{ix, s, q, n, {n, n + 1, n + 2, n + 3}};
+  W.doubles = ix.double_coordinates && double_coordinates(q) &&
+              std::all_of(s.points.begin() + n, s.points.end(), double_coordinates);
   const auto& P = s.points;
   ComplexWalkStats2D st;
-  // start: the line through q at direction 0 turned clockwise: front ray (1, -0), back ray (-1, +0)
-  const Point2 east(q.x + 1, q.y), west(q.x - 1, q.y);
-  int edge[2] = {W.edge_hit_before(Dir{&q, &east}, true), W.edge_hit_before(Dir{&q, &west}, false)};  // front, back
+  // start: the line through q at direction 0 turned clockwise: front ray (1, -0), back ray (-1, +0); a
+  // scene edge met is nearer than the frame, which encloses the scene
+  auto frame_hit = [&](bool front) {
+    const Point2 far(front ? q.x + 1 : q.x - 1, q.y);
+    return W.frame_edge_hit_before(Dir{&q, &far}, front);
+  };
+  int edge[2] = {at.east >= 0 ? at.east : frame_hit(true), at.west >= 0 ? at.west : frame_hit(false)};  // front, back
   std::vector<Point2> out[2];
   std::vector<int> seen{edge[0], edge[1]};
   Dir current{};
   bool started = false;
   static const std::vector<int> none;
+  std::vector<int> at_best;  // valid appearing vertices at direction `best`
   for (;;) {
     ++st.faces;
     std::array<int, 2> pair{W.object_or_infinity(edge[0]), W.object_or_infinity(edge[1])};
@@ -312,14 +379,20 @@ VisibilityPolygon2D visibility_polygon_in_complex(const ComplexWalkIndex2D& ix, 
     Dir best{};
     bool have = false;
     int slide[2] = {-1, -1};
-    std::vector<int> at_best;  // valid appearing vertices at direction `best`
-    auto later = [&](const Dir& d) { return !started || compare_dir(current, d) < 0; };
+    at_best.clear();
+    auto later = [&](const Dir& d) { return !started || compare_dir(current, d, W.doubles) < 0; };
+    EnclosureBox swept[2];  // per side: contains every point between q and the hit edge until its slide
     for (int side = 0; side < 2; ++side) {
       const int x = W.ccw_end(edge[side]);
+      // the hit point moves along the edge towards its counterclockwise end x: the segment from q sweeps
+      // the triangle (q, last hit point, x), within the triangle (q, edge) before the first event
+      swept[side].add(q), swept[side].add(P[x]);
+      if (out[side].empty()) swept[side].add(P[edge[side]]), swept[side].add(P[s.next[edge[side]]]);
+      else swept[side].add(out[side].back());
       if (half_of(q, P[x]) != side) continue;  // reached only after this half-turn
       const Dir d = line_dir(q, P[x]);
       if (!later(d)) continue;
-      const int c = have ? compare_dir(d, best) : -1;
+      const int c = have ? compare_dir(d, best, W.doubles) : -1;
       if (c < 0) {
         best = d, have = true;
         slide[0] = slide[1] = -1;
@@ -327,15 +400,20 @@ VisibilityPolygon2D visibility_polygon_in_complex(const ComplexWalkIndex2D& ix, 
       }
       if (c <= 0) slide[side] = x;
     }
-    const Sign q_side[2] = {orientation2(P[edge[0]], P[s.next[edge[0]]], q),
-                            orientation2(P[edge[1]], P[s.next[edge[1]]], q)};
+    Sign q_side[2] = {Sign::Zero, Sign::Zero};  // orientation2(edge, q), computed when first needed
     for (int w : cands) {
       ++st.candidates;
+      // an event vertex lies strictly between q and its side's hit edge, inside that side's swept triangle
+      const bool in0 = swept[0].meets(P[w]), in1 = swept[1].meets(P[w]);
+      if (!in0 && !in1) continue;
       const int side = half_of(q, P[w]);
+      if (!(side == 0 ? in0 : in1)) continue;
+      ++st.candidates_tested;
       const Dir d = side == 0 ? Dir{&q, &P[w]} : Dir{&P[w], &q};
-      const int c = have ? compare_dir(d, best) : -1;
+      const int c = have ? compare_dir(d, best, W.doubles) : -1;
       if (c > 0) continue;
       if (!later(d)) continue;
+      if (q_side[side] == Sign::Zero) q_side[side] = orientation2(P[edge[side]], P[s.next[edge[side]]], q);
       if (!W.before_edge(w, edge[side], q_side[side])) continue;
       if (c < 0) {
         best = d, have = true;
@@ -363,8 +441,8 @@ VisibilityPolygon2D visibility_polygon_in_complex(const ComplexWalkIndex2D& ix, 
       if (next == edge[side]) continue;
       ++st.events;
       for (int e : {edge[side], next}) {
-        const Point2 p = W.hit(e, R);
-        if (out[side].empty() || out[side].back() != p) out[side].push_back(p);
+        Point2 p = W.hit(e, R);
+        if (out[side].empty() || out[side].back() != p) out[side].push_back(std::move(p));
       }
       edge[side] = next;
       seen.push_back(next);

@@ -36,6 +36,30 @@ TEST(NumberTypes, NonDoubleRationalsAreDetected) {
   EXPECT_FALSE(exact_double(to_exact(1e308) * to_exact(10.0), nullptr));
 }
 
+TEST(NumberTypes, TightIntervalEqualsCgalToInterval) {
+  // The smallest enclosing pair of doubles, as CGAL::to_interval (MPFR) computes it: doubles at every
+  // scale (point intervals), rationals that are no doubles, dyadics with 54+ significant bits, sums of a
+  // double and a tiny offset, subnormal and overflowing magnitudes, both signs.
+  std::mt19937_64 rng(12);
+  std::uniform_int_distribution<int> e(-1074, 1023);
+  std::uniform_real_distribution<double> m(-1, 1);
+  std::uniform_int_distribution<long> n(-1000000007, 1000000007);
+  std::vector<Exact> xs{Exact(0), Exact(1), Exact(-1), Exact(1, 3), Exact(-2, 3), Exact(1e308) * 4, -Exact(1e308) * 4,
+                        Exact(std::ldexp(1.0, -1074)), Exact(std::ldexp(1.0, -1074)) / 3, Exact(std::ldexp(1.0, -1022)) / 3};
+  for (int i = 0; i < 3000; ++i) {
+    const double d = std::ldexp(m(rng), e(rng));
+    xs.push_back(Exact(d));
+    xs.push_back(Exact(d) + Exact(std::ldexp(d, -60)));  // 54+ significant bits: not a double
+    xs.push_back(Exact(n(rng), std::max<long>(1, std::abs(n(rng)))));
+    xs.push_back(Exact(d) / 7);
+  }
+  for (const Exact& x : xs) {
+    const auto got = tight_interval(x), want = CGAL::to_interval(x);
+    ASSERT_EQ(got.first, want.first) << x;
+    ASSERT_EQ(got.second, want.second) << x;
+  }
+}
+
 TEST(NumberTypes, ParseRational) {
   EXPECT_EQ(parse_rational("1/3") * 3, Exact(1));
   EXPECT_EQ(parse_rational("-2/4"), Exact(-1) / Exact(2));
