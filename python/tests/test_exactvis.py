@@ -58,6 +58,18 @@ OCCLUDER_V = np.array([[-1, -1, 2], [2, -1, 2], [2, 2, 2], [-1, 2, 2],
 OCCLUDER_F = np.array([[0, 1, 2], [0, 2, 3], [4, 5, 6], [7, 8, 9]], dtype=np.int64)
 
 
+@pytest.fixture(scope="module")
+def small_scene_file(tmp_path_factory):
+    """The 4 triangles below as an OBJ file: events (EEE enumeration is quadratic in the edges) stay fast."""
+    path = tmp_path_factory.mktemp("scenes") / "small.obj"
+    with open(path, "w") as f:
+        for v in OCCLUDER_V:
+            f.write("v %r %r %r\n" % tuple(float(x) for x in v))
+        for t in OCCLUDER_F:
+            f.write("f %d %d %d\n" % tuple(int(i) + 1 for i in t))
+    return str(path)
+
+
 # ---- an independent exact re-check of witnesses (plain Fractions)
 
 def sub(a, b):
@@ -241,31 +253,31 @@ def test_degenerate_faces_are_not_visible():
 
 # ---- events
 
-def test_events_match_cli_json(scene_file):
+def test_events_match_cli_json(small_scene_file):
     calls = []
-    assert exactvis.events(scene_file, progress=lambda d, t: calls.append((d, t))) == cli_json(
-        "events", scene_file, "--json", "--no-progress")
+    assert exactvis.events(small_scene_file, progress=lambda d, t: calls.append((d, t))) == cli_json(
+        "events", small_scene_file, "--json", "--no-progress")
     assert calls and all(0 <= d <= t for d, t in calls)  # at least each stage's end
-    scene = exactvis.load_scene(scene_file)
+    scene = exactvis.load_scene(small_scene_file)
     ev = exactvis.events(scene, kinds=["EV"], split=False)
-    assert ev == cli_json("events", scene_file, "--json", "--kinds", "EV", "--no-split", "--no-progress")
+    assert ev == cli_json("events", small_scene_file, "--json", "--kinds", "EV", "--no-split", "--no-progress")
     assert ev["counts"]["EEE"] is None and ev["counts"]["EV"] == len(ev["events"]) > 0
 
 
-def test_events_light_matches_cli(scene_file):
-    light = [(0.0, 0.0, 2.0), (0.5, 0.0, 2.0), (0.0, 0.5, 2.0)]
-    j = cli_json("events", scene_file, "--json", "--no-progress", "--light", "0,0,2;0.5,0,2;0,0.5,2")
-    assert exactvis.events(scene_file, light=light) == j
+def test_events_light_matches_cli(small_scene_file):
+    light = [(0.0, 0.0, 4.0), (0.5, 0.0, 4.0), (0.0, 0.5, 4.0)]
+    j = cli_json("events", small_scene_file, "--json", "--no-progress", "--light", "0,0,4;0.5,0,4;0,0.5,4")
+    assert exactvis.events(small_scene_file, light=light) == j
     assert j["light"]["appended"] is True
 
 
-def test_events_bad_input_messages_as_cli(scene_file):
+def test_events_bad_input_messages_as_cli(small_scene_file):
     for kwargs, args in [(dict(kinds="EV,XY"), ["--kinds", "EV,XY"]),
                          (dict(light="nosuchobject"), ["--light", "nosuchobject"]),
                          (dict(light="0,0,0;1,0,0;2,0,0"), ["--light", "0,0,0;1,0,0;2,0,0"])]:
         with pytest.raises(ValueError) as e:
-            exactvis.events(scene_file, **kwargs)
-        assert str(e.value) == cli_error("events", scene_file, *args)
+            exactvis.events(small_scene_file, **kwargs)
+        assert str(e.value) == cli_error("events", small_scene_file, *args)
 
 
 # ---- complex2d
