@@ -10,6 +10,7 @@ packages=(
   nlohmann-json3-dev libcli11-dev libgtest-dev
   libzip-dev          # reading Quake 3 .pk3 archives (io/zip_archive)
   assimp-testmodels   # broken model files the bad-input tests use
+  pybind11-dev python3-dev python3-numpy python3-pytest  # the Python module (python/) and its tests
 )
 
 missing=()
