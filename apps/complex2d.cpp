@@ -2,6 +2,7 @@
 // complex (free bitangents, edges, faces) of a planar scene (docs/cli.md).
 #include "apps/cli_util.hpp"
 #include "apps/command_registry.hpp"
+#include "api/complex2d.hpp"
 #include "io/atomic_file.hpp"
 #include "io/scene2d_json.hpp"
 #include "io/svg_2d.hpp"
@@ -21,12 +22,6 @@ struct Complex2DOptions {
   bool json = false;
 };
 
-using ojson = nlohmann::ordered_json;  // keeps the documented key order ("counts" first)
-
-using app::exact_json;  // exact values: a JSON number when exactly a double, else "num/den"
-using app::point_json;
-ojson end_json(const SegmentEnd2D& e) { return e.kind == SegmentEnd2D::Infinity ? ojson() : point_json(e.point); }
-
 int run(const Complex2DOptions& o) {
   OutputFiles outputs({o.svg, o.vtp});  // fails now, not after the work, when an output cannot be created
   const Scene2D scene = load_scene2d(o.scene, o.slice);
@@ -34,32 +29,7 @@ int run(const Complex2DOptions& o) {
   const VisibilityComplex2D cx = visibility_complex(scene, progress.callback());
   const auto& B = cx.graph.bitangents;
   if (o.json) {
-    ojson j;
-    j["counts"] = {{"bitangents", B.size()}, {"edges", cx.edges.size()}, {"faces", cx.faces.size()}};
-    j["bitangents"] = ojson::array();
-    for (std::size_t i = 0; i < B.size(); ++i) {
-      const Bitangent2D& b = B[i];
-      j["bitangents"].push_back({{"objects", {b.object_a, b.object_b}},
-                                 {"kind", b.kind()},
-                                 {"a", point_json(scene.points[b.a])},
-                                 {"b", point_json(scene.points[b.b])},
-                                 {"vertices", {b.a, b.b}},
-                                 {"segment", {end_json(b.end_a), end_json(b.end_b)}},
-                                 {"end_objects", {b.end_a.object, b.end_b.object}},
-                                 {"edges", cx.vertices[i].edges},
-                                 {"faces", cx.vertices[i].faces}});
-    }
-    j["edges"] = ojson::array();
-    for (const auto& e : cx.edges)
-      j["edges"].push_back({{"object", e.object}, {"chain", e.chain}, {"vertices", e.vertices},
-                            {"end_objects", e.end_objects}, {"faces", e.faces}, {"degenerate", e.degenerate}});
-    j["faces"] = ojson::array();
-    for (const auto& f : cx.faces) j["faces"].push_back({{"objects", f.objects}});
-    j["visibility_graph"] = {{"vertices", scene.num_vertices()},
-                             {"strict_pairs", cx.graph.strict_pairs.size()},
-                             {"ring_edges", cx.graph.ring_edges.size()}};
-    j["gluing_consistent"] = cx.gluing_consistent;
-    std::cout << j.dump(1) << "\n";
+    std::cout << api::complex2d_json(scene, cx).dump(1) << "\n";
   } else {
     std::cout << "objects " << scene.num_objects << ", vertices " << scene.num_vertices() << "\n"
               << "bitangents " << B.size() << ", edges " << cx.edges.size() << ", faces " << cx.faces.size()

@@ -2,6 +2,7 @@
 // with occlusion (docs/cli.md "events", definitions in docs/theory.md section 6).
 #include "apps/cli_util.hpp"
 #include "apps/command_registry.hpp"
+#include "api/events.hpp"
 #include "events/eee_enumeration.hpp"
 #include "events/ev_events.hpp"
 #include "events/light_source.hpp"
@@ -27,58 +28,21 @@ struct EventsOptions {
   bool no_progress = false;
 };
 
-// Parses "EV", "EEE", "EV,EEE" (any order, case-sensitive); throws std::invalid_argument otherwise.
-std::pair<bool, bool> parse_kinds(const std::string& text) {
-  bool ev = false, eee = false;
-  std::stringstream ss(text);
-  std::string item;
-  while (std::getline(ss, item, ',')) {
-    if (item == "EV") ev = true;
-    else if (item == "EEE") eee = true;
-    else throw std::invalid_argument("--kinds: unknown event kind '" + item + "' (expected EV, EEE or EV,EEE)");
-  }
-  if (!ev && !eee) throw std::invalid_argument("--kinds: no event kind given (expected EV, EEE or EV,EEE)");
-  return {ev, eee};
-}
-
 int run_events(const EventsOptions& o) {
-  const auto [want_ev, want_eee] = parse_kinds(o.kinds);
+  const auto [want_ev, want_eee] = exactvis::api::parse_event_kinds(o.kinds);
   exactvis::Scene scene = exactvis::load_scenes(o.scenes);
-  exactvis::EvOptions opt;
-  exactvis::EeeOptions eee_opt;
-  exactvis::LightSource light;
-  if (!o.light.empty()) {
-    light = exactvis::app::parse_light(scene, o.light);
-    opt.light_triangles = light.triangles;
-    eee_opt.light_triangles = light.triangles;
-  }
-  opt.progress = eee_opt.progress = exactvis::app::progress_wanted(o.no_progress);
-  opt.split_at_end_objects = !o.no_split;
-  exactvis::EvResult r;
-  exactvis::EeeResult eee;
-  if (want_ev) r = exactvis::enumerate_ev_events(scene, opt);
-  if (want_eee) eee = exactvis::enumerate_eee_events(scene, eee_opt);
+  exactvis::api::EventsRequest request;  // the job itself is api/events.hpp (also the Python module's)
+  request.ev = want_ev;
+  request.eee = want_eee;
+  if (!o.light.empty()) request.light = exactvis::app::parse_light(scene, o.light);
+  request.progress_bar = exactvis::app::progress_wanted(o.no_progress);
+  request.split_at_end_objects = !o.no_split;
+  const exactvis::api::EventsAnswer answer = exactvis::api::events(scene, request);
+  const exactvis::EvResult& r = answer.ev;
+  const exactvis::EeeResult& eee = answer.eee;
   if (!o.vtp.empty()) exactvis::write_event_surfaces_vtp(o.vtp, scene, r, eee);
   if (o.json) {
-    nlohmann::json j = exactvis::ev_events_to_json(scene, r);
-    j["counts"]["EV"] = want_ev ? nlohmann::json(r.events.size()) : nlohmann::json(nullptr);
-    j["counts"]["EEE"] = want_eee ? nlohmann::json(eee.events.size()) : nlohmann::json(nullptr);
-    j["kinds"] = nlohmann::json::array();
-    if (want_ev) j["kinds"].push_back("EV");
-    if (want_eee) j["kinds"].push_back("EEE");
-    for (auto& e : exactvis::eee_events_to_json(scene, eee)) j["events"].push_back(std::move(e));
-    j["stats"]["eee_outer_pairs"] = eee.stats.outer_pairs;
-    j["stats"]["eee_outer_pairs_kept"] = eee.stats.outer_pairs_kept;
-    j["stats"]["eee_candidate_triples"] = eee.stats.candidate_triples;
-    j["stats"]["eee_tangent_triples"] = eee.stats.eee.tangent_triples;
-    j["stats"]["eee_occluder_tests"] = eee.stats.eee.occluder_tests;
-    if (!o.light.empty())
-      j["light"] = {{"object", light.name}, {"appended", light.appended}, {"triangles", [&] {
-                       std::vector<std::int64_t> ids;
-                       for (int ti : light.triangles) ids.push_back(scene.triangles[ti].id);
-                       return ids;
-                     }()}};
-    std::cout << j.dump(2) << "\n";
+    std::cout << exactvis::api::events_json(scene, answer).dump(2) << "\n";
     return 0;
   }
   if (want_ev) {

@@ -135,7 +135,18 @@ int run_visible(const VisibleOptions& o) {
         segs.push_back({scene.triangles[r.triangle_index].id, dbl(r.witness->p), dbl(r.witness->q)});
       }
     }
-    write_visibility_vtp(o.vtp, scene, state, segs);
+    std::vector<std::vector<Point3>> source_faces;  // the cell's 6 faces or the polygon, drawn with the result
+    auto approx = [](const region::Polygon3& poly) {
+      std::vector<Point3> out;
+      for (const auto& p : poly) out.push_back({CGAL::to_double(p.x), CGAL::to_double(p.y), CGAL::to_double(p.z)});
+      return out;
+    };
+    if (cell)
+      for (int axis = 0; axis < 3; ++axis)
+        for (const bool high : {false, true}) source_faces.push_back(approx(region::box_face(*cell, axis, high)));
+    else
+      source_faces.push_back(approx(polygon));
+    write_visibility_vtp(o.vtp, scene, state, segs, source_faces);
   }
   if (!o.output.empty()) {
     write_atomically(o.output, [&](const std::string& temp) {

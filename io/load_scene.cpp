@@ -386,69 +386,94 @@ RawMesh load_raw(const std::string& path) {
   return m;
 }
 
+// Appends the mesh `m` read from `path` (or named `path`) to `scene`: fan triangulation, ids, the exact
+// zero-area drop, objects (groups, else connected components named "<file>#component<k>").
+void append_mesh(Scene& scene, const std::string& path, const RawMesh& m, bool report_drops) {
+  if (scene.vertices.size() + m.vertices.size() > static_cast<size_t>(std::numeric_limits<int>::max()))
+    fail(path, "too many vertices");
+  const int base = static_cast<int>(scene.vertices.size());
+  scene.vertices.insert(scene.vertices.end(), m.vertices.begin(), m.vertices.end());
+
+  // Fan triangulation and ids (before dropping), then the exact zero-area test.
+  struct Tri {
+    std::int64_t id;
+    std::array<int, 3> v;
+    int face;
+  };
+  std::vector<Tri> kept;
+  std::int64_t dropped = 0;
+  for (size_t f = 0; f < m.faces.size(); ++f) {
+    const auto& face = m.faces[f];
+    for (size_t k = 1; k + 1 < face.size(); ++k) {
+      const std::int64_t id = scene.faces_read++;
+      const std::array<int, 3> v{base + face[0], base + face[k], base + face[k + 1]};
+      if (collinear(scene.vertices[v[0]], scene.vertices[v[1]], scene.vertices[v[2]])) {
+        ++dropped;
+        continue;
+      }
+      kept.push_back({id, v, static_cast<int>(f)});
+    }
+  }
+  scene.degenerate_dropped += dropped;
+  if (dropped > 0 && report_drops) std::cerr << path << ": dropped " << dropped << " degenerate triangles\n";
+
+  // Objects: OBJ groups when present, else connected components (over kept triangles' shared vertices).
+  std::vector<int> key(kept.size());
+  std::vector<std::string> names;
+  if (!m.face_group.empty()) {
+    for (size_t i = 0; i < kept.size(); ++i) key[i] = m.face_group[kept[i].face];
+    names = m.group_names;
+  } else {
+    UnionFind uf(m.vertices.size());
+    for (const auto& t : kept) {
+      uf.unite(t.v[0] - base, t.v[1] - base);
+      uf.unite(t.v[0] - base, t.v[2] - base);
+    }
+    for (size_t i = 0; i < kept.size(); ++i) key[i] = uf.find(kept[i].v[0] - base);
+  }
+  // Number objects in order of their first triangle; groups/components without triangles are not objects.
+  std::map<int, int> object_of_key;
+  const std::string file_name = std::filesystem::path(path).filename().string();
+  for (size_t i = 0; i < kept.size(); ++i) {
+    auto [it, inserted] = object_of_key.emplace(key[i], static_cast<int>(scene.objects.size()));
+    if (inserted) {
+      const std::string name = names.empty()
+                                   ? file_name + "#component" + std::to_string(object_of_key.size() - 1)
+                                   : names[key[i]];
+      scene.objects.push_back({name});
+    }
+    scene.triangles.push_back({kept[i].id, kept[i].v, it->second});
+  }
+}
+
 }  // namespace
 
 Scene load_scenes(const std::vector<std::string>& paths) {
   if (paths.empty()) throw InputError("no scene files given");
   Scene scene;
-  for (const std::string& path : paths) {
-    const RawMesh m = load_raw(path);
-    if (scene.vertices.size() + m.vertices.size() > static_cast<size_t>(std::numeric_limits<int>::max()))
-      fail(path, "too many vertices");
-    const int base = static_cast<int>(scene.vertices.size());
-    scene.vertices.insert(scene.vertices.end(), m.vertices.begin(), m.vertices.end());
+  for (const std::string& path : paths) append_mesh(scene, path, load_raw(path), true);
+  return scene;
+}
 
-    // Fan triangulation and ids (before dropping), then the exact zero-area test.
-    struct Tri {
-      std::int64_t id;
-      std::array<int, 3> v;
-      int face;
-    };
-    std::vector<Tri> kept;
-    std::int64_t dropped = 0;
-    for (size_t f = 0; f < m.faces.size(); ++f) {
-      const auto& face = m.faces[f];
-      for (size_t k = 1; k + 1 < face.size(); ++k) {
-        const std::int64_t id = scene.faces_read++;
-        const std::array<int, 3> v{base + face[0], base + face[k], base + face[k + 1]};
-        if (collinear(scene.vertices[v[0]], scene.vertices[v[1]], scene.vertices[v[2]])) {
-          ++dropped;
-          continue;
-        }
-        kept.push_back({id, v, static_cast<int>(f)});
-      }
-    }
-    scene.degenerate_dropped += dropped;
-    if (dropped > 0) std::cerr << path << ": dropped " << dropped << " degenerate triangles\n";
-
-    // Objects: OBJ groups when present, else connected components (over kept triangles' shared vertices).
-    std::vector<int> key(kept.size());
-    std::vector<std::string> names;
-    if (!m.face_group.empty()) {
-      for (size_t i = 0; i < kept.size(); ++i) key[i] = m.face_group[kept[i].face];
-      names = m.group_names;
-    } else {
-      UnionFind uf(m.vertices.size());
-      for (const auto& t : kept) {
-        uf.unite(t.v[0] - base, t.v[1] - base);
-        uf.unite(t.v[0] - base, t.v[2] - base);
-      }
-      for (size_t i = 0; i < kept.size(); ++i) key[i] = uf.find(kept[i].v[0] - base);
-    }
-    // Number objects in order of their first triangle; groups/components without triangles are not objects.
-    std::map<int, int> object_of_key;
-    const std::string file_name = std::filesystem::path(path).filename().string();
-    for (size_t i = 0; i < kept.size(); ++i) {
-      auto [it, inserted] = object_of_key.emplace(key[i], static_cast<int>(scene.objects.size()));
-      if (inserted) {
-        const std::string name = names.empty()
-                                     ? file_name + "#component" + std::to_string(object_of_key.size() - 1)
-                                     : names[key[i]];
-        scene.objects.push_back({name});
-      }
-      scene.triangles.push_back({kept[i].id, kept[i].v, it->second});
-    }
+Scene scene_from_arrays(const std::vector<Point3>& vertices, const std::vector<std::array<std::int64_t, 3>>& faces,
+                        const std::string& name) {
+  RawMesh m;
+  m.vertices = vertices;
+  const auto nv = static_cast<std::int64_t>(vertices.size());
+  if (nv > std::numeric_limits<int>::max()) fail("V", "too many vertices");
+  for (std::size_t i = 0; i < vertices.size(); ++i)
+    if (!std::isfinite(vertices[i].x) || !std::isfinite(vertices[i].y) || !std::isfinite(vertices[i].z))
+      fail("V", "vertex " + std::to_string(i) + " has a non-finite coordinate");
+  m.faces.reserve(faces.size());
+  for (std::size_t f = 0; f < faces.size(); ++f) {
+    for (const std::int64_t v : faces[f])
+      if (v < 0 || v >= nv)
+        fail("F", "face " + std::to_string(f) + " refers to vertex " + std::to_string(v) + ", out of range [0, " +
+                      std::to_string(nv) + ")");
+    m.faces.push_back({static_cast<int>(faces[f][0]), static_cast<int>(faces[f][1]), static_cast<int>(faces[f][2])});
   }
+  Scene scene;
+  append_mesh(scene, name, m, false);
   return scene;
 }
 

@@ -17,6 +17,8 @@
 //   against their types and the file size first. UTF-16/32 text is refused by name, a UTF-8 BOM skipped.
 #include "kernel/scene.hpp"
 
+#include <array>
+#include <cstdint>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -34,5 +36,13 @@ Scene load_scenes(const std::vector<std::string>& paths);
 
 // Loads one file; same as load_scenes({path}).
 Scene load_scene(const std::string& path);
+
+// A scene from arrays (the Python module's V, F): vertex i = vertices[i], triangle id f = faces[f] (vertex
+// indices), zero-area triangles dropped (their ids absent, counted in degenerate_dropped, not printed),
+// objects = connected components over shared vertex indices, named "NAME#component<k>". Throws
+// InputError("V: vertex I has a non-finite coordinate") or InputError("F: face F refers to vertex V, out
+// of range [0, N)").
+Scene scene_from_arrays(const std::vector<Point3>& vertices, const std::vector<std::array<std::int64_t, 3>>& faces,
+                        const std::string& name = "arrays");
 
 }  // namespace exactvis

@@ -55,6 +55,10 @@ std::vector<PolygonInput2D> read_polygons2d_json(const std::string& path) {
       if (c == '\n' || c == '\r') c = ' ';
     fail(path, "not valid JSON:" + why);
   }
+  return polygons2d_from_json(doc, path);
+}
+
+std::vector<PolygonInput2D> polygons2d_from_json(const nlohmann::json& doc, const std::string& path) {
   if (!doc.is_object() || !doc.contains("polygons") || !doc["polygons"].is_array())
     fail(path, "expected {\"polygons\": [...]}");
   std::vector<PolygonInput2D> polys;

@@ -6,6 +6,8 @@
 // (taken as the exact doubles they are) or strings "num/den". Rings are not closed (no repeated vertex).
 #include "planar/scene2d.hpp"
 
+#include <nlohmann/json.hpp>
+
 #include <string>
 #include <vector>
 
@@ -13,6 +15,10 @@ namespace exactvis {
 
 // Parses the polygons of a 2D scene JSON document. Throws InputError("FILE: problem").
 std::vector<PolygonInput2D> read_polygons2d_json(const std::string& path);
+
+// The polygons of an already parsed 2D scene document `doc` ({"polygons": [...]}, as above); `name` stands
+// for the file in messages. Throws InputError("NAME: problem") with the messages read_polygons2d_json gives.
+std::vector<PolygonInput2D> polygons2d_from_json(const nlohmann::json& doc, const std::string& name);
 
 // Section of a 3D scene file (any format load_scenes reads) by the plane `spec`, "x=V", "y=V" or "z=V"
 // (V exact, e.g. 1.5 or 3/2): planar/slice_scene.hpp (plane coordinates, loops, holes). Throws InputError

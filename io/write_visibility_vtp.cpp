@@ -4,6 +4,7 @@
 
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
+#include <vtkFloatArray.h>
 #include <vtkIdTypeArray.h>
 #include <vtkIntArray.h>
 #include <vtkNew.h>
@@ -11,10 +12,13 @@
 #include <vtkPolyData.h>
 #include <vtkXMLPolyDataWriter.h>
 
+#include <limits>
+
 namespace exactvis {
 
 void write_visibility_vtp(const std::string& path, const Scene& scene, const std::vector<int>& state,
-                          const std::vector<WitnessSegment>& witnesses) {
+                          const std::vector<WitnessSegment>& witnesses,
+                          const std::vector<std::vector<Point3>>& source_faces) {
   if (state.size() != scene.triangles.size())
     throw OutputError(path + ": visibility state does not match the scene's triangles");
   vtkNew<vtkPoints> points;
@@ -24,7 +28,9 @@ void write_visibility_vtp(const std::string& path, const Scene& scene, const std
   // vtkPolyData orders cell data as lines before polygons.
   vtkNew<vtkIdTypeArray> id;
   vtkNew<vtkIdTypeArray> object;
-  vtkNew<vtkIntArray> visible, kind;
+  vtkNew<vtkFloatArray> visible;  // NaN where a cell is not a scene triangle
+  vtkNew<vtkIntArray> kind;
+  const float no_value = std::numeric_limits<float>::quiet_NaN();
   id->SetName("id");
   object->SetName("object");
   visible->SetName("visible");
@@ -34,7 +40,7 @@ void write_visibility_vtp(const std::string& path, const Scene& scene, const std
     lines->InsertNextCell(2, ids);
     id->InsertNextValue(w.triangle_id);
     object->InsertNextValue(-1);
-    visible->InsertNextValue(1);
+    visible->InsertNextValue(no_value);
     kind->InsertNextValue(1);
   }
   for (std::size_t i = 0; i < scene.triangles.size(); ++i) {
@@ -43,8 +49,17 @@ void write_visibility_vtp(const std::string& path, const Scene& scene, const std
     polys->InsertNextCell(3, ids);
     id->InsertNextValue(t.id);
     object->InsertNextValue(t.object);
-    visible->InsertNextValue(state[i]);
+    visible->InsertNextValue(static_cast<float>(state[i]));
     kind->InsertNextValue(0);
+  }
+  for (const auto& face : source_faces) {  // polygons after the scene's triangles
+    std::vector<vtkIdType> ids;
+    for (const auto& p : face) ids.push_back(points->InsertNextPoint(p.x, p.y, p.z));
+    polys->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
+    id->InsertNextValue(-1);
+    object->InsertNextValue(-1);
+    visible->InsertNextValue(no_value);
+    kind->InsertNextValue(2);
   }
   vtkNew<vtkPolyData> poly;
   poly->SetPoints(points);

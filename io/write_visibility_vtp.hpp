@@ -1,7 +1,9 @@
 #pragma once
 // One .vtp file showing a from-region visibility result: the scene's triangles with cell arrays
-// "id" (scene triangle id), "object", "visible" (1 visible, 0 hidden, -1 not queried) and "kind" (0), and the
-// witness segments as line cells with "id" = the triangle they prove visible, "visible" = 1 and "kind" = 1.
+// "id" (scene triangle id), "object", "visible" (1 visible, 0 hidden, -1 not queried) and "kind" (0); the
+// witness segments as line cells with "id" = the triangle they prove visible and "kind" = 1; the source (the
+// view cell's 6 faces, or the source polygon) as polygon cells with "id" = -1 and "kind" = 2. "visible" is a
+// float array, NaN on witnesses and source, so colouring by it paints the scene's triangles only.
 #include "kernel/scene.hpp"
 
 #include <cstdint>
@@ -16,9 +18,11 @@ struct WitnessSegment {
   Point3 p, q;  // double approximations of the exact witness, for display only
 };
 
-// Input: output path, scene, per-triangle state (parallel to scene.triangles: 1, 0 or -1), witnesses.
+// Input: output path, scene, per-triangle state (parallel to scene.triangles: 1, 0 or -1), witnesses, and the
+// source's faces (convex polygons, double approximations for display; empty: no source drawn).
 // Output: the file, written atomically (throws OutputError on failure, leaving nothing).
 void write_visibility_vtp(const std::string& path, const Scene& scene, const std::vector<int>& state,
-                          const std::vector<WitnessSegment>& witnesses);
+                          const std::vector<WitnessSegment>& witnesses,
+                          const std::vector<std::vector<Point3>>& source_faces = {});
 
 }  // namespace exactvis

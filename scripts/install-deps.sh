@@ -12,6 +12,7 @@ packages=(
   assimp-testmodels   # broken model files the bad-input tests use
   openmpi-bin libopenmpi-dev  # mpirun exactvis pvs (apps/pvs_run); MPI::MPI_C for Debian's VTK rendering targets
   xvfb libgl1-mesa-dri  # `shadows --png` without a display: Xvfb + Mesa software OpenGL (io/render_png)
+  pybind11-dev python3-dev python3-numpy python3-pytest  # the Python module (python/) and its tests
 )
 
 missing=()

@@ -1,13 +1,22 @@
 #include "util/progress_bar.hpp"
 
+#include "util/progress_observer.hpp"
+
 #include <cstdio>
 
 namespace exactvis {
+
+namespace {
+std::atomic<ProgressObserver*> the_observer{nullptr};
+}  // namespace
+
+ProgressObserver* set_progress_observer(ProgressObserver* observer) { return the_observer.exchange(observer); }
 
 ProgressBar::ProgressBar(std::string label, std::uint64_t total, bool enabled)
     : label_(std::move(label)), total_(total), enabled_(enabled), last_(std::chrono::steady_clock::now()) {}
 
 ProgressBar::~ProgressBar() {
+  if (ProgressObserver* observer = the_observer.load()) observer->report(label_, done_.load(), total_);
   if (!enabled_) return;
   draw(done_.load());
   std::fputc('\n', stderr);
@@ -15,13 +24,15 @@ ProgressBar::~ProgressBar() {
 
 void ProgressBar::advance(std::uint64_t steps) {
   const std::uint64_t done = done_.fetch_add(steps) + steps;
-  if (!enabled_) return;
+  ProgressObserver* observer = the_observer.load(std::memory_order_relaxed);
+  if (!enabled_ && !observer) return;
   std::unique_lock lock(mutex_, std::try_to_lock);
   if (!lock.owns_lock()) return;
   const auto now = std::chrono::steady_clock::now();
   if (now - last_ < std::chrono::milliseconds(200)) return;
   last_ = now;
-  draw(done);
+  if (enabled_) draw(done);
+  if (observer) observer->report(label_, done, total_);
 }
 
 void ProgressBar::set_done(std::uint64_t done) {

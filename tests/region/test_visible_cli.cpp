@@ -5,12 +5,15 @@
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
+#include <vtkCell.h>
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
 #include <vtkNew.h>
 #include <vtkPolyData.h>
 #include <vtkXMLPolyDataReader.h>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -114,9 +117,32 @@ TEST_F(VisibleCli, CellSourceWritesJsonFileAndVtp) {
   reader->SetFileName(vtp.c_str());
   reader->Update();
   vtkPolyData* poly = reader->GetOutput();
-  EXPECT_EQ(poly->GetNumberOfPolys(), 6);
+  EXPECT_EQ(poly->GetNumberOfPolys(), 6 + 6);  // the scene's triangles and the cell's faces
   EXPECT_EQ(poly->GetNumberOfLines(), visible);
-  ASSERT_NE(poly->GetCellData()->GetArray("visible"), nullptr);
+  vtkDataArray* vis = poly->GetCellData()->GetArray("visible");
+  vtkDataArray* kind = poly->GetCellData()->GetArray("kind");
+  ASSERT_NE(vis, nullptr);
+  ASSERT_NE(kind, nullptr);
+  // Cell order: witness lines, scene triangles, cell faces. Only scene triangles carry a `visible` value.
+  for (vtkIdType c = 0; c < poly->GetNumberOfCells(); ++c) {
+    const int k = static_cast<int>(kind->GetTuple1(c));
+    EXPECT_EQ(k, c < visible ? 1 : c < visible + 6 ? 0 : 2) << c;
+    EXPECT_EQ(std::isnan(vis->GetTuple1(c)), k != 0) << c;
+  }
+  double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
+  for (vtkIdType c = visible + 6; c < poly->GetNumberOfCells(); ++c) {
+    vtkCell* face = poly->GetCell(c);
+    EXPECT_EQ(face->GetNumberOfPoints(), 4);
+    for (vtkIdType k = 0; k < face->GetNumberOfPoints(); ++k) {
+      double p[3];
+      poly->GetPoint(face->GetPointId(k), p);
+      for (int a = 0; a < 3; ++a) lo[a] = std::min(lo[a], p[a]), hi[a] = std::max(hi[a], p[a]);
+    }
+  }
+  EXPECT_EQ(lo[0], -2.0);  // the cell -2,-1,-1,-1,1,1
+  EXPECT_EQ(hi[0], -1.0);
+  EXPECT_EQ(lo[1], -1.0);
+  EXPECT_EQ(hi[2], 1.0);
 }
 
 TEST_F(VisibleCli, BadParametersFailCleanly) {

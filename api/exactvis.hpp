@@ -1,0 +1,18 @@
+#pragma once
+// exactvis: every job façade in one include (#include <exactvis/api/exactvis.hpp>, link exactvis::exactvis).
+// Each façade is one call per job with the inputs, outputs and conventions of the matching subcommand of
+// the command line (docs/cli.md); scenes come from io/load_scene.hpp (files, or arrays: scene_from_arrays)
+// and io/scene2d_json.hpp (2D scenes).
+//
+// Jobs:
+//   api/visible.hpp    from-region visibility of triangles from a view cell or polygon, with witnesses
+//   api/events.hpp     EV and EEE visual events with occlusion (JSON as `exactvis events --json`)
+//   api/complex2d.hpp  the 2D visibility complex (JSON as `exactvis complex2d --json`)
+// To be wired when their subcommands land on main (one header each, same shape):
+//   PVS (potentially visible sets of view cells), the 3D visibility skeleton, shadows (discontinuity
+//   meshes), exterior and aspect graphs: see the lead's notes in issue #17.
+#include "api/complex2d.hpp"
+#include "api/events.hpp"
+#include "api/visible.hpp"
+#include "io/load_scene.hpp"
+#include "io/scene2d_json.hpp"
