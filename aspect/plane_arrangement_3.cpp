@@ -83,7 +83,8 @@ class Builder {
 
   // sign(n_k . x - c_k)
   Sign side(int k, const FilteredPoint& x) const {
-    return filtered_sign(side_counter, [&](auto nt) {
+    // Layer 1 is skipped (the inputs are kept as enclosing intervals, not doubles): interval, then exact.
+    return filtered_sign_with(side_counter, [] { return std::optional<Sign>{}; }, [&](auto nt) {
       using NT = typename decltype(nt)::type;
       if constexpr (std::is_same_v<NT, Interval>) return n_[k].x * x.box.x + n_[k].y * x.box.y + n_[k].z * x.box.z - c_[k];
       else return NT(dot(P_[k].normal, x.exact) - P_[k].offset);
@@ -91,7 +92,7 @@ class Builder {
   }
   // sign(n_k . w)
   Sign along(int k, const FilteredPoint& w) const {
-    return filtered_sign(direction_counter, [&](auto nt) {
+    return filtered_sign_with(direction_counter, [] { return std::optional<Sign>{}; }, [&](auto nt) {
       using NT = typename decltype(nt)::type;
       if constexpr (std::is_same_v<NT, Interval>) return n_[k].x * w.box.x + n_[k].y * w.box.y + n_[k].z * w.box.z;
       else return NT(dot(P_[k].normal, w.exact));
