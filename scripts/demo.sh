@@ -11,5 +11,11 @@ bash "$root/scripts/build.sh" exactvis
 mkdir -p "$root/out"
 "$build/exactvis" info "$root/scenes/town.obj"
 "$build/exactvis" export "$root/scenes/town.obj" -o "$root/out/town.vtp"
-"$build/exactvis" visible "$root/scenes/town.obj" --cell 0.5,0.5,1,2,2,2 --triangles all \
+# A street-level cell (between the houses, 1 to 2 units above the ground), not inside a building.
+cell=6,6,1,7,7,2
+echo "deciding exactly which triangles of scenes/town.obj are visible from the view cell [$cell] ..."
+start=$SECONDS
+"$build/exactvis" visible "$root/scenes/town.obj" --cell "$cell" --triangles all \
   -o "$root/out/visible.json" --vtp "$root/out/visible.vtp"
+echo "done in $((SECONDS - start)) s; witnesses in out/visible.json, scene coloured visible/hidden with the"
+echo "witness segments and the cell in out/visible.vtp, the scene in out/town.vtp (open them in ParaView)"
