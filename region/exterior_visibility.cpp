@@ -106,9 +106,9 @@ ExteriorTriangle ExteriorClassifier::classify(std::int64_t t, VisibilityStats* s
         w.d = random_direction(rng);
       }
       // Proposals in doubles where possible, so that an accepted witness needs no rounding (one exact check).
-      const RationalPoint3 qd = nearest_doubles(w.q);
+      const RationalPoint3 qd = round_to_doubles(w.q);
       if (!(qd == w.q) && in_triangle_relative_interior(qd, tri)) w.q = qd;
-      const Vec3<Exact> dd = nearest_doubles(w.d);
+      const Vec3<Exact> dd = round_to_doubles(w.d);
       if (CGAL::sign(dd.x) != 0 || CGAL::sign(dd.y) != 0 || CGAL::sign(dd.z) != 0) w.d = dd;
       const glm::vec3 o = to_float(w.q), d = to_float(w.d);
       if (!(glm::dot(d, d) > 0) || !std::isfinite(glm::dot(d, d))) continue;

@@ -8,15 +8,6 @@
 
 namespace exactvis::region {
 
-RationalPoint3 nearest_doubles(const RationalPoint3& p) {
-  RationalPoint3 out = p;
-  for (int k = 0; k < 3; ++k) {
-    const double x = CGAL::to_double(p[k]);
-    if (std::isfinite(x)) out[k] = Exact(x);
-  }
-  return out;
-}
-
 bool coplanar_triangles(const Scene& scene, std::int64_t t, std::int64_t other) {
   const SceneTriangle& a = scene.triangles[static_cast<std::size_t>(t)];
   const SceneTriangle& b = scene.triangles[static_cast<std::size_t>(other)];
@@ -54,12 +45,12 @@ ExteriorWitnessCheck check_exterior_witness(const Scene& scene, const TriangleIn
 ExteriorWitness round_exterior_witness(const Scene& scene, const TriangleIndex& index, const Box3& scene_box,
                                        std::int64_t triangle_index, const ExteriorWitness& w) {
   ExteriorWitness best = w;
-  const Vec3<Exact> d = nearest_doubles(w.d);
+  const Vec3<Exact> d = round_to_doubles(w.d);
   if (!(d == w.d)) {
     const ExteriorWitness r{w.q, d};
     if (check_exterior_witness(scene, index, scene_box, triangle_index, r) == ExteriorWitnessCheck::Valid) best = r;
   }
-  const RationalPoint3 q = nearest_doubles(w.q);
+  const RationalPoint3 q = round_to_doubles(w.q);
   if (!(q == w.q)) {
     const ExteriorWitness r{q, best.d};
     if (check_exterior_witness(scene, index, scene_box, triangle_index, r) == ExteriorWitnessCheck::Valid) best = r;

@@ -9,6 +9,7 @@
 //   4. the open ray {q + s d : s > 0} meets no closed scene triangle other than T.
 // Conditions 1, 2, 4 are the definition's escaping ray; 3 makes the closed ray keep a positive distance from
 // every triangle that could block a nearby ray, so an open neighbourhood of (q, d) escapes too.
+#include "kernel/round_to_doubles.hpp"
 #include "kernel/predicates.hpp"
 #include "kernel/scene.hpp"
 #include "kernel/triangle_index.hpp"
@@ -36,10 +37,6 @@ ExteriorWitnessCheck check_exterior_witness(const Scene& scene, const TriangleIn
 // (first d alone, then q and d), else the witness as given. Makes JSON output plain numbers when possible.
 ExteriorWitness round_exterior_witness(const Scene& scene, const TriangleIndex& index, const Box3& scene_box,
                                        std::int64_t triangle_index, const ExteriorWitness& w);
-
-// The point (or vector) with each coordinate rounded to the nearest double; a coordinate beyond the range of
-// doubles stays exact. Exact as rationals.
-RationalPoint3 nearest_doubles(const RationalPoint3& p);
 
 // True iff every corner of scene triangle `other` lies in the plane of scene triangle `t` (exact orient3d).
 bool coplanar_triangles(const Scene& scene, std::int64_t t, std::int64_t other);

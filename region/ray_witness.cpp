@@ -1,5 +1,6 @@
 #include "region/ray_witness.hpp"
 
+#include "kernel/round_to_doubles.hpp"
 #include "kernel/segment_triangle_intersection.hpp"
 
 #include <glm/vec3.hpp>
@@ -11,8 +12,6 @@ namespace exactvis::region {
 namespace {
 
 Point3 to_point(const RationalPoint3& p) { return {CGAL::to_double(p.x), CGAL::to_double(p.y), CGAL::to_double(p.z)}; }
-
-RationalPoint3 nearest_doubles(const RationalPoint3& p) { return to_rational(to_point(p)); }
 
 }  // namespace
 
@@ -73,7 +72,7 @@ std::optional<Witness> ray_witness(const PvsContext& context, const RationalBox3
     // Embree saw a free ray: re-check the exact segment (p is the double sample, q the exact weighted point).
     const Witness w{to_rational(pd), weighted_point(tri, weights)};
     if (!is_robust_cell_witness(context, cell, target, w)) continue;
-    const Witness rounded{w.p, nearest_doubles(w.q)};
+    const Witness rounded{w.p, round_to_doubles(w.q)};
     if (!(rounded.q == w.q) && is_robust_cell_witness(context, cell, target, rounded)) return rounded;
     return w;
   }

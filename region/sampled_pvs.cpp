@@ -1,5 +1,6 @@
 #include "region/sampled_pvs.hpp"
 
+#include "kernel/round_to_doubles.hpp"
 #include "region/cell_visibility.hpp"
 #include "region/ray_witness.hpp"
 
@@ -30,10 +31,6 @@ std::optional<RationalPoint3> barycentric_point(const std::array<RationalPoint3,
   if (!(u > 0 && v > 0 && static_cast<double>(u) + static_cast<double>(v) < 1)) return std::nullopt;
   const Exact eu(static_cast<double>(u)), ev(static_cast<double>(v));
   return t[0] + eu * (t[1] - t[0]) + ev * (t[2] - t[0]);
-}
-
-RationalPoint3 nearest_doubles_of(const RationalPoint3& x) {
-  return {Exact(CGAL::to_double(x.x)), Exact(CGAL::to_double(x.y)), Exact(CGAL::to_double(x.z))};
 }
 
 }  // namespace
@@ -74,7 +71,7 @@ CellPvs sampled_cell_pvs(const PvsContext& context, const RationalBox3& cell, co
                       *q};
       if (!is_robust_cell_witness(context, cell, hit.triangle_index, w)) continue;
       seen.insert(hit.triangle_index);
-      const Witness rounded{w.p, nearest_doubles_of(w.q)};
+      const Witness rounded{w.p, round_to_doubles(w.q)};
       const bool use_rounded = options.query.round_witness && !(rounded.q == w.q) &&
                                is_robust_cell_witness(context, cell, hit.triangle_index, rounded);
       found[c].push_back({hit.triangle_index, r, use_rounded ? rounded : w});

@@ -1,5 +1,6 @@
 #include "region/witness.hpp"
 
+#include "kernel/round_to_doubles.hpp"
 #include "kernel/segment_triangle_intersection.hpp"
 
 namespace exactvis::region {
@@ -47,10 +48,6 @@ IntVec6 push_inside(const IntVec6& x, const IntVec6& interior, int s) {
   }
 }
 
-RationalPoint3 nearest_doubles(const RationalPoint3& p) {
-  return {Exact(CGAL::to_double(p.x)), Exact(CGAL::to_double(p.y)), Exact(CGAL::to_double(p.z))};
-}
-
 }  // namespace
 
 std::optional<Witness> line_in_cone(const PolyhedralCone6& cone, const RealLineTest& test, const StabbingPair& pair,
@@ -89,7 +86,7 @@ std::optional<Witness> line_in_cone(const PolyhedralCone6& cone, const RealLineT
 std::optional<Witness> round_witness(const Scene& scene, const CandidateFinder& candidates,
                                      const std::function<bool(const RationalPoint3&)>& on_source,
                                      std::int64_t triangle_index, const Witness& w) {
-  const Witness r{nearest_doubles(w.p), nearest_doubles(w.q)};
+  const Witness r{round_to_doubles(w.p), round_to_doubles(w.q)};
   if (r.p == w.p && r.q == w.q) return w;
   const auto tri = triangle_points(scene, triangle_index);
   if (!on_source(r.p) || !in_triangle_relative_interior(r.q, tri)) return std::nullopt;
