@@ -5,6 +5,7 @@
 #include "region/from_region_visibility.hpp"
 #include "region/ray_witness.hpp"
 #include "util/for_each_index.hpp"
+#include "util/mix_seed.hpp"
 
 #include <tbb/parallel_invoke.h>
 #include <tbb/task_arena.h>
@@ -19,13 +20,6 @@
 
 namespace exactvis::region {
 namespace {
-
-std::uint64_t mix_seed(std::uint64_t seed, std::uint64_t index) {
-  std::uint64_t z = seed + 0x9e3779b97f4a7c15ull * (index + 1);
-  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-  z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-  return z ^ (z >> 31);
-}
 
 Box3 approximate_box(const RationalBox3& b) {
   return {{CGAL::to_double(b.lo.x), CGAL::to_double(b.lo.y), CGAL::to_double(b.lo.z)},

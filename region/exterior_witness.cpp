@@ -17,13 +17,6 @@ bool coplanar_triangles(const Scene& scene, std::int64_t t, std::int64_t other) 
   return true;
 }
 
-std::uint64_t mix_seed(std::uint64_t seed, std::uint64_t i) {
-  std::uint64_t z = seed + 0x9e3779b97f4a7c15ULL * (i + 1);
-  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-  return z ^ (z >> 31);
-}
-
 ExteriorWitnessCheck check_exterior_witness(const Scene& scene, const TriangleIndex& index, const Box3& scene_box,
                                             std::int64_t triangle_index, const ExteriorWitness& w) {
   const auto tri = triangle_points(scene, triangle_index);

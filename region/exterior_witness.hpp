@@ -10,6 +10,7 @@
 // Conditions 1, 2, 4 are the definition's escaping ray; 3 makes the closed ray keep a positive distance from
 // every triangle that could block a nearby ray, so an open neighbourhood of (q, d) escapes too.
 #include "kernel/round_to_doubles.hpp"
+#include "util/mix_seed.hpp"
 #include "kernel/predicates.hpp"
 #include "kernel/scene.hpp"
 #include "kernel/triangle_index.hpp"
@@ -40,10 +41,6 @@ ExteriorWitness round_exterior_witness(const Scene& scene, const TriangleIndex& 
 
 // True iff every corner of scene triangle `other` lies in the plane of scene triangle `t` (exact orient3d).
 bool coplanar_triangles(const Scene& scene, std::int64_t t, std::int64_t other);
-
-// A well-mixed 64-bit value of (seed, i) (splitmix64 finaliser): per-triangle random streams that do not depend on
-// the thread that runs the triangle.
-std::uint64_t mix_seed(std::uint64_t seed, std::uint64_t i);
 
 // The escaping ray of a from-region witness segment (p on a face of a box strictly enclosing the scene, q in
 // relint T, open segment (q, p) free): d = p - q. (Beyond p the ray is outside the box, where nothing is.)
