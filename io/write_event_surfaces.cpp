@@ -1,7 +1,7 @@
 #include "io/write_event_surfaces.hpp"
 
 #include "events/event_surfaces.hpp"
-#include "io/atomic_file.hpp"
+#include "io/vtk_polydata_file.hpp"
 
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
@@ -10,7 +10,6 @@
 #include <vtkNew.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
-#include <vtkXMLPolyDataWriter.h>
 
 #include <algorithm>
 
@@ -75,15 +74,7 @@ void write_event_surfaces_vtp(const std::string& path, const Scene& scene, const
   }
   poly->GetCellData()->AddArray(t0a);
   poly->GetCellData()->AddArray(t1a);
-  write_atomically(path, [&](const std::string& temp) {
-    vtkNew<vtkXMLPolyDataWriter> writer;
-    writer->SetFileName(temp.c_str());
-    writer->SetInputData(poly);
-    writer->SetDataModeToAppended();
-    writer->EncodeAppendedDataOff();
-    writer->SetCompressorTypeToZLib();
-    return writer->Write() == 1 && writer->GetErrorCode() == 0;
-  });
+  write_polydata_vtp(path, poly);
 }
 
 }  // namespace exactvis

@@ -1,6 +1,7 @@
 #include "io/write_pvs_check_vtp.hpp"
 
 #include "io/atomic_file.hpp"
+#include "io/vtk_polydata_file.hpp"
 
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
@@ -9,7 +10,6 @@
 #include <vtkNew.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
-#include <vtkXMLPolyDataWriter.h>
 
 namespace exactvis {
 
@@ -66,15 +66,7 @@ void write_pvs_check_vtp(const std::string& path, const Scene& scene, const std:
   poly->GetCellData()->AddArray(state);
   poly->GetCellData()->AddArray(kind);
   poly->GetCellData()->SetActiveScalars("status");
-  write_atomically(path, [&](const std::string& temp) {
-    vtkNew<vtkXMLPolyDataWriter> writer;
-    writer->SetFileName(temp.c_str());
-    writer->SetInputData(poly);
-    writer->SetDataModeToAppended();
-    writer->EncodeAppendedDataOff();
-    writer->SetCompressorTypeToZLib();
-    return writer->Write() == 1 && writer->GetErrorCode() == 0;
-  });
+  write_polydata_vtp(path, poly);
 }
 
 }  // namespace exactvis

@@ -1,6 +1,6 @@
 #include "io/write_shadow_mesh.hpp"
 
-#include "io/vtk_quiet.hpp"
+#include "io/vtk_polydata_file.hpp"
 
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
@@ -10,7 +10,6 @@
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
-#include <vtkXMLPolyDataWriter.h>
 
 #include <charconv>
 #include <fstream>
@@ -77,14 +76,7 @@ bool write_shadow_mesh_vtp(const std::string& temp_path, const Scene& scene, con
   poly->GetCellData()->AddArray(face);
   poly->GetCellData()->AddArray(frac);
   poly->GetCellData()->AddArray(firr);
-  QuietVtk quiet;
-  vtkNew<vtkXMLPolyDataWriter> writer;
-  writer->SetFileName(temp_path.c_str());
-  writer->SetInputData(poly);
-  writer->SetDataModeToAppended();
-  writer->EncodeAppendedDataOff();
-  writer->SetCompressorTypeToZLib();
-  return writer->Write() == 1 && writer->GetErrorCode() == 0;
+  return write_polydata_file(temp_path, poly);
 }
 
 bool write_shadow_mesh_ply(const std::string& temp_path, const Scene& scene, const shadows::ShadowResult& result) {

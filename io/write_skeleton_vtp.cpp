@@ -2,7 +2,7 @@
 
 #include "events/eee_events.hpp"
 #include "events/ev_events.hpp"
-#include "io/atomic_file.hpp"
+#include "io/vtk_polydata_file.hpp"
 #include "kernel/rational_between.hpp"
 
 #include <vtkCellArray.h>
@@ -11,7 +11,6 @@
 #include <vtkNew.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
-#include <vtkXMLPolyDataWriter.h>
 
 #include <array>
 #include <optional>
@@ -108,15 +107,7 @@ void write_skeleton_vtp(const std::string& path, const Scene& scene, const Skele
     for (const auto& v : poly_values) arr->InsertNextValue(v[c]);
     poly->GetCellData()->AddArray(arr);
   }
-  write_atomically(path, [&](const std::string& temp) {
-    vtkNew<vtkXMLPolyDataWriter> writer;
-    writer->SetFileName(temp.c_str());
-    writer->SetInputData(poly);
-    writer->SetDataModeToAppended();
-    writer->EncodeAppendedDataOff();
-    writer->SetCompressorTypeToZLib();
-    return writer->Write() == 1 && writer->GetErrorCode() == 0;
-  });
+  write_polydata_vtp(path, poly);
 }
 
 }  // namespace exactvis

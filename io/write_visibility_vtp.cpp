@@ -1,6 +1,7 @@
 #include "io/write_visibility_vtp.hpp"
 
 #include "io/atomic_file.hpp"
+#include "io/vtk_polydata_file.hpp"
 
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
@@ -10,7 +11,6 @@
 #include <vtkNew.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
-#include <vtkXMLPolyDataWriter.h>
 
 #include <limits>
 
@@ -70,15 +70,7 @@ void write_visibility_vtp(const std::string& path, const Scene& scene, const std
   poly->GetCellData()->AddArray(visible);
   poly->GetCellData()->AddArray(kind);
   poly->GetCellData()->SetActiveScalars("visible");
-  write_atomically(path, [&](const std::string& temp) {
-    vtkNew<vtkXMLPolyDataWriter> writer;
-    writer->SetFileName(temp.c_str());
-    writer->SetInputData(poly);
-    writer->SetDataModeToAppended();
-    writer->EncodeAppendedDataOff();
-    writer->SetCompressorTypeToZLib();
-    return writer->Write() == 1 && writer->GetErrorCode() == 0;
-  });
+  write_polydata_vtp(path, poly);
 }
 
 }  // namespace exactvis

@@ -1,7 +1,7 @@
 #include "io/write_vtp.hpp"
 
 #include "io/atomic_file.hpp"
-#include "io/vtk_quiet.hpp"
+#include "io/vtk_polydata_file.hpp"
 
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
@@ -10,7 +10,6 @@
 #include <vtkNew.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
-#include <vtkXMLPolyDataWriter.h>
 
 namespace exactvis {
 namespace {
@@ -36,19 +35,6 @@ void add_arrays(vtkPolyData* poly, const CellArrays& arrays, std::size_t cells, 
     for (std::size_t i = 0; i < cells; ++i) arr->SetValue(static_cast<vtkIdType>(i), a.values[i]);
     poly->GetCellData()->AddArray(arr);
   }
-}
-
-void write_poly(const std::string& path, vtkPolyData* poly) {
-  write_atomically(path, [&](const std::string& temp) {
-    QuietVtk quiet;  // a failure is reported by write_atomically, as one line
-    vtkNew<vtkXMLPolyDataWriter> writer;
-    writer->SetFileName(temp.c_str());
-    writer->SetInputData(poly);
-    writer->SetDataModeToAppended();
-    writer->EncodeAppendedDataOff();  // raw binary: compact and exact (doubles as stored)
-    writer->SetCompressorTypeToZLib();
-    return writer->Write() == 1 && writer->GetErrorCode() == 0;
-  });
 }
 
 void check_names(const CellArrays& arrays, const std::string& path) {
@@ -88,7 +74,7 @@ void write_scene_vtp(const std::string& path, const Scene& scene, const CellArra
   all.ints.insert(all.ints.end(), extra.ints.begin(), extra.ints.end());
   all.doubles = extra.doubles;
   add_arrays(poly, all, scene.triangles.size(), path);
-  write_poly(path, poly);
+  write_polydata_vtp(path, poly);
 }
 
 void write_polylines_vtp(const std::string& path, const std::vector<std::vector<Point3>>& polylines,
@@ -106,7 +92,7 @@ void write_polylines_vtp(const std::string& path, const std::vector<std::vector<
   poly->SetPoints(points);
   poly->SetLines(lines);
   add_arrays(poly, per_line, polylines.size(), path);
-  write_poly(path, poly);
+  write_polydata_vtp(path, poly);
 }
 
 void write_segments_vtp(const std::string& path, const std::vector<std::pair<Point3, Point3>>& segments,
@@ -150,7 +136,7 @@ void write_surface_with_lines_vtp(const std::string& path, const std::vector<Poi
   kind.values.resize(polylines.size() + triangles.size(), 2);
   arrays.ints = {std::move(values), std::move(kind)};
   add_arrays(poly, arrays, polylines.size() + triangles.size(), path);
-  write_poly(path, poly);
+  write_polydata_vtp(path, poly);
 }
 
 }  // namespace exactvis
