@@ -108,7 +108,7 @@ const exactvis::app::CommandRegistration registration("events", 110, [](CLI::App
   sub->add_flag("--no-split", opts->no_split,
                 "Do not split EV free intervals where the end objects change (faster on large scenes; segment_ends "
                 "are then those of each interval's midpoint line only)");
-  sub->add_flag("--no-progress", opts->no_progress, "No progress bar on stderr");
+  sub->add_flag("-q,--quiet,--no-progress", opts->no_progress, "No progress bar on stderr");
   return [opts]() { return run_events(*opts); };
 });
 

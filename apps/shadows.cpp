@@ -219,7 +219,7 @@ const exactvis::app::CommandRegistration registration("shadows", 120, [](CLI::Ap
   sub->add_option("--ply", opts->ply, "Write the conforming mesh as ASCII .ply");
   sub->add_option("--png", opts->png, "Render the lit scene to a PNG (VTK offscreen; starts Xvfb when DISPLAY is unset)");
   sub->add_flag("--json", opts->json, "Machine-readable JSON on stdout");
-  sub->add_flag("-q,--no-progress", opts->no_progress, "No progress bar on stderr");
+  sub->add_flag("-q,--quiet,--no-progress", opts->no_progress, "No progress bar on stderr");
   return [opts]() { return run_shadows(*opts); };
 });
 
