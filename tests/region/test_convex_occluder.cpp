@@ -23,6 +23,17 @@ mpq_class q(const Exact& x) {
 oracle::QVec to_q(const RationalPoint3& p) { return {q(p.x), q(p.y), q(p.z)}; }
 oracle::QVec to_q(const Point3& p) { return oracle::qvec(p.x, p.y, p.z); }
 
+// Oracle: the closed segment meets a closed face triangle of the solid.
+bool oracle_meets_surface(const Scene& scene, const ConvexSolid& s, const oracle::QVec& a, const oracle::QVec& b) {
+  for (const std::int64_t ti : s.triangles) {
+    const auto& t = scene.triangles[ti];
+    if (oracle::oracle_closed_segment_meets_closed_triangle(a, b, to_q(scene.corner(t, 0)), to_q(scene.corner(t, 1)),
+                                                            to_q(scene.corner(t, 2))))
+      return true;
+  }
+  return false;
+}
+
 // Oracle: the closed segment meets the closed solid iff an endpoint is inside (same side of every face
 // plane as the corners' centroid, or on it) or the segment meets a face triangle.
 bool oracle_meets(const Scene& scene, const ConvexSolid& s, const oracle::QVec& a, const oracle::QVec& b) {
@@ -39,24 +50,7 @@ bool oracle_meets(const Scene& scene, const ConvexSolid& s, const oracle::QVec& 
     }
     return true;
   };
-  if (inside(a) || inside(b)) return true;
-  for (const std::int64_t ti : s.triangles) {
-    const auto& t = scene.triangles[ti];
-    if (oracle::oracle_closed_segment_meets_closed_triangle(a, b, to_q(scene.corner(t, 0)), to_q(scene.corner(t, 1)),
-                                                            to_q(scene.corner(t, 2))))
-      return true;
-  }
-  return false;
-}
-
-bool oracle_meets_surface(const Scene& scene, const ConvexSolid& s, const oracle::QVec& a, const oracle::QVec& b) {
-  for (const std::int64_t ti : s.triangles) {
-    const auto& t = scene.triangles[ti];
-    if (oracle::oracle_closed_segment_meets_closed_triangle(a, b, to_q(scene.corner(t, 0)), to_q(scene.corner(t, 1)),
-                                                            to_q(scene.corner(t, 2))))
-      return true;
-  }
-  return false;
+  return inside(a) || inside(b) || oracle_meets_surface(scene, s, a, b);
 }
 
 void tetrahedron(SceneBuilder& b, const Point3& p0, const Point3& p1, const Point3& p2, const Point3& p3) {
