@@ -4,7 +4,7 @@
 #include "region/convex_occluder.hpp"
 
 #include "oracles/rational_geometry.hpp"
-#include "region/pvs_test_scenes.hpp"
+#include "tests/region/pvs_test_scenes.hpp"
 
 #include <gtest/gtest.h>
 
