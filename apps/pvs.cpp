@@ -1,5 +1,5 @@
 // `exactvis pvs SCENE... (--grid NX,NY,NZ [--box X0,Y0,Z0,X1,Y1,Z1] | --cells cells.json) [--json] [-o FILE]
-//  [--jsonl] [--resume] [--no-witnesses] [--vtp DIR] [--method exact] [--shard K/N] [--threads N] [-q]`:
+//  [--jsonl] [--resume] [--no-witnesses] [--vtp DIR] [--method exact|sampled|conservative] [--shard K/N] [--threads N] [-q]`:
 // the exact potentially visible set of every view cell, with a witness per visible triangle (docs/cli.md).
 #include "api/pvs.hpp"
 #include "apps/cli_util.hpp"
@@ -158,6 +158,12 @@ int run_pvs(const PvsCliOptions& o) {
 
   // ---- the cells
   const region::PvsContext context(scene);
+  if (method == region::PvsMethod::conservative && writer && !o.quiet) {
+    const region::ExtrudedScene& ex = context.extruded();
+    std::cerr << "pvs --method conservative: "
+              << (ex.is_25d ? "the scene is 2.5D" : "the scene is not 2.5D (" + ex.reason + "): fallback") << ", "
+              << ex.walls.size() << " wall rectangles as occluders\n";
+  }
   {
     CellsProgress bar("pvs", mine.size(), "triangles", writer && app::progress_wanted(o.quiet));
     for (std::size_t i = 0; i < mine.size() - todo.size(); ++i) bar.finish_item();
@@ -171,6 +177,9 @@ int run_pvs(const PvsCliOptions& o) {
         std::cerr << "cell " << job.index << ": " << pvs.stats.rays_cast << " rays in " << pvs.stats.seconds << " s ("
                   << (pvs.stats.seconds > 0 ? static_cast<double>(pvs.stats.rays_cast) / pvs.stats.seconds : 0.0)
                   << " rays/s), " << pvs.stats.visible << " triangles confirmed\n";
+      if (method == region::PvsMethod::conservative && !o.quiet)
+        std::cerr << "cell " << job.index << ": " << pvs.stats.culled << " of " << pvs.stats.triangles
+                  << " triangles proved hidden in " << pvs.stats.seconds << " s, " << pvs.stats.visible << " listed\n";
       if (!o.vtp.empty()) write_cell_vtp(o.vtp, scene, job.index, pvs);
       return pvs_cell_json(scene, job.index, pvs, with_witnesses);
     };
@@ -228,8 +237,10 @@ const exactvis::app::CommandRegistration registration("pvs", 110, [](CLI::App& p
   sub->add_flag("--no-witnesses", o->no_witnesses, "Leave the witness segments out of the output");
   sub->add_option("--vtp", o->vtp, "Write DIR/cell_<i>.vtp: the scene coloured visible/hidden for each cell");
   sub->add_option("--method", o->method,
-                  "PVS method: exact (every triangle decided exactly) or sampled (random rays per cell, each hit "
-                  "confirmed exactly: never lists a hidden triangle, may miss visible ones)")
+                  "PVS method: exact (every triangle decided exactly), sampled (random rays per cell, each hit "
+                  "confirmed exactly: never lists a hidden triangle, may miss visible ones) or conservative (leaves "
+                  "out only triangles proved hidden by a wall rectangle: never misses a visible one, lists extra; "
+                  "no witnesses)")
       ->capture_default_str();
   sub->add_option("--shard", o->shard, "Compute only cells K, K+N, K+2N, ... (job arrays; join with pvs-merge)");
   sub->add_option("--threads", o->threads, "Worker threads: 0 = all cores (default), else 1 .. 1024");
