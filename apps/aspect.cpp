@@ -141,13 +141,13 @@ std::vector<PngPanel> png_panels(const Scene& scene, const ConvexModel& model, c
 
 // Cost warning before the work (docs/cli.md): time scaled from docs/performance.md (bench_aspect: 3.9 CPU s
 // for 186 face planes orthographic, growth below m^3; 7.7 s for 62 planes perspective, below m^4).
-std::string cost_warning(std::size_t m, ViewModel view) {
+std::string cost_warning(std::size_t m, ViewModel view, const char* what = "face planes") {
   const bool ortho = view == ViewModel::Orthographic;
   const double seconds = ortho ? 3.9 * std::pow(m / 186.0, 3) : 7.7 * std::pow(m / 62.0, 4);
   if (seconds < 60) return "";
   std::ostringstream w;
   w.precision(2);
-  w << "aspect: warning: " << m << " face planes: the " << (ortho ? "orthographic" : "perspective")
+  w << "aspect: warning: " << m << " " << what << ": the " << (ortho ? "orthographic" : "perspective")
     << " arrangement has O(m^" << (ortho ? 2 : 3) << ") cells at O(m) each; roughly " << seconds
     << " s (scaled from docs/performance.md)";
   return w.str();
@@ -163,7 +163,7 @@ int run_general_orthographic(const AspectOptions& o, const Scene& scene, const s
   const ClosedSolidFronts fronts = closed_solid_fronts(scene);
   if (!fronts.ok) throw InputError(label + ": " + fronts.problem);
   const std::size_t circles = orthographic_aspect_circles(scene, fronts);
-  if (const std::string w = cost_warning(circles, ViewModel::Orthographic); !w.empty() && !o.quiet)
+  if (const std::string w = cost_warning(circles, ViewModel::Orthographic, "great circles"); !w.empty() && !o.quiet)
     std::cerr << w << std::endl;
   const AspectGraph3 g = [&] {
     app::FractionProgress bar("aspect: arrangement", app::progress_wanted(o.quiet));
@@ -261,7 +261,8 @@ const exactvis::app::CommandRegistration registration(
       CLI::App* sub = parent.add_subcommand(
           "aspect", "exact aspect graph of a 3D model: regions of viewpoints with one set of visible triangles");
       sub->add_option("scene", opts->scenes, "Scene files (.obj .ply .off .stl), loaded as one scene")->required();
-      auto* ort = sub->add_flag("--orthographic", opts->orthographic, "viewpoints are directions (the viewing sphere)");
+      auto* ort = sub->add_flag("--orthographic", opts->orthographic, "viewpoints are directions (the viewing sphere); convex models and closed solids whose front parts are convex "
+                                "(docs/theory.md 10.5)");
       auto* per = sub->add_flag("--perspective", opts->perspective,
                                 "viewpoints are points outside the model (convex models only)");
       auto* pla = sub->add_option("--plane", opts->plane, "viewpoints on the plane z=H (H a number or num/den; convex models)");
