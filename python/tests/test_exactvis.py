@@ -378,7 +378,7 @@ def test_pvs_bad_input_messages_as_cli(small_scene_file, tmp_path):
     bad.write_text('{"cells": [[0, 0, 0, 1, 1, -1]]}')
     cases = [(dict(cells=str(bad)), ["--cells", bad]),
              (dict(grid=(0, 1, 1)), ["--grid", "0,1,1"]),
-             (dict(grid=(1, 1, 1), method="conservative"), ["--grid", "1,1,1", "--method", "conservative"]),
+             (dict(grid=(1, 1, 1), method="approximate"), ["--grid", "1,1,1", "--method", "approximate"]),
              (dict(grid=(1, 1, 1), threads=5000), ["--grid", "1,1,1", "--threads", "5000"]),
              (dict(grid=(1, 1, 1), seed=-3), ["--grid", "1,1,1", "--seed", "-3"])]
     for kwargs, args in cases:
