@@ -210,7 +210,8 @@ def pvs(V, F=None, cells=None, *, grid=None, box=None, method="exact", witnesses
     - cells: a sequence of boxes (x0, y0, z0, x1, y1, z1) (floats, ints, Fractions or "num/den" strings, taken
       exactly; x0 < x1, y0 < y1, z0 < z1), numbered in order; or the path of a cells file (``--cells``).
       Or ``grid=(nx, ny, nz)``: a grid over the scene's bounding box, or over ``box=(x0, ..., z1)``.
-    - method: "exact" (default) or "sampled" (``--method``); witnesses=False is ``--no-witnesses``.
+    - method: "exact" (default), "sampled" or "conservative" (``--method``); witnesses=False is
+      ``--no-witnesses``.
     - samples, rays, seed, threads, hierarchy: ``--samples``, ``--rays`` (None: the method's default),
       ``--seed``, ``--threads``, hierarchy=False is ``--no-hierarchy``.
     - progress: called as progress(decided, total), total = cells x triangles.

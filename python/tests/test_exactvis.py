@@ -347,6 +347,8 @@ def test_pvs_matches_cli_json_and_witnesses_recheck(tmp_path, small_scene_file):
     assert got == j
     assert calls and calls[-1] == (3 * 4, 3 * 4) and all(0 <= d <= t == 12 for d, t in calls)
     assert exactvis.pvs(small_scene_file, cells=str(cells_path), threads=1) == j
+    jc = cli_json("pvs", small_scene_file, "--cells", cells_path, "--method", "conservative", "--json", "-q")
+    assert exactvis.pvs(small_scene_file, cells=PVS_CELLS, method="conservative") == jc
     # arrays: the same answers, "scene" null; every witness re-checked exactly (Fractions)
     arr = exactvis.pvs(OCCLUDER_V, OCCLUDER_F, cells=PVS_CELLS)
     assert arr["scene"] is None
@@ -378,7 +380,7 @@ def test_pvs_bad_input_messages_as_cli(small_scene_file, tmp_path):
     bad.write_text('{"cells": [[0, 0, 0, 1, 1, -1]]}')
     cases = [(dict(cells=str(bad)), ["--cells", bad]),
              (dict(grid=(0, 1, 1)), ["--grid", "0,1,1"]),
-             (dict(grid=(1, 1, 1), method="approximate"), ["--grid", "1,1,1", "--method", "approximate"]),
+             (dict(grid=(1, 1, 1), method="magic"), ["--grid", "1,1,1", "--method", "magic"]),
              (dict(grid=(1, 1, 1), threads=5000), ["--grid", "1,1,1", "--threads", "5000"]),
              (dict(grid=(1, 1, 1), seed=-3), ["--grid", "1,1,1", "--seed", "-3"])]
     for kwargs, args in cases:
