@@ -17,6 +17,7 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -58,6 +59,10 @@ std::uint64_t parse_uint64(const std::string& text, const std::string& what);
 // A worker thread count: 0 (all cores) or 1 .. region::kMaxThreads; throws "WHAT: N is not a thread count
 // (0 = all cores, or 1 .. 1024)".
 int check_thread_count(int threads, const std::string& what);
+
+// --png-size "WxH": the picture's width and height in pixels, each 16 .. 8192; throws "--png-size: 'T' is
+// not WxH with W and H in 16 .. 8192".
+std::array<int, 2> parse_png_size(const std::string& text);
 
 // ---- JSON
 // An exact value in ordered JSON (the subcommands keep their documented key order): io/json_number.hpp.
