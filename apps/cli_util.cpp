@@ -68,6 +68,22 @@ region::RationalBox3 parse_box(const std::string& text, const std::string& what)
   return b;
 }
 
+std::array<long, 3> parse_grid(const std::string& text) {
+  const auto parts = split(text, ',');
+  const std::string msg = "--grid: need 3 whole numbers NX,NY,NZ, each 1 .. 100000";
+  if (parts.size() != 3) throw std::invalid_argument(msg);
+  std::array<long, 3> n{};
+  for (int k = 0; k < 3; ++k) {
+    const std::string t = trim(parts[k]);
+    if (t.empty() || t.size() > 6 || t.find_first_not_of("0123456789") != std::string::npos)
+      throw std::invalid_argument(msg + " ('" + t + "')");
+    n[k] = std::stol(t);
+    if (n[k] < 1 || n[k] > 100000) throw std::invalid_argument(msg + " ('" + t + "')");
+  }
+  if (n[0] * n[1] * n[2] > 100'000'000) throw std::invalid_argument("--grid: more than 10^8 cells");
+  return n;
+}
+
 region::RationalBox3 parse_cell(const std::string& text) { return parse_box(text, "--cell"); }
 
 region::Polygon3 parse_source_polygon(const std::string& text) {

@@ -60,6 +60,10 @@ std::uint64_t parse_uint64(const std::string& text, const std::string& what);
 // (0 = all cores, or 1 .. 1024)".
 int check_thread_count(int threads, const std::string& what);
 
+// --grid "NX,NY,NZ": three whole numbers, each 1 .. 100000, at most 10^8 cells in all. Throws "--grid: need 3
+// whole numbers NX,NY,NZ, each 1 .. 100000 ('T')" or "--grid: more than 10^8 cells".
+std::array<long, 3> parse_grid(const std::string& text);
+
 // --png-size "WxH": the picture's width and height in pixels, each 16 .. 8192; throws "--png-size: 'T' is
 // not WxH with W and H in 16 .. 8192".
 std::array<int, 2> parse_png_size(const std::string& text);
