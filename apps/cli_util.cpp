@@ -138,6 +138,22 @@ int check_thread_count(int threads, const std::string& what) {
   return threads;
 }
 
+std::array<int, 2> parse_png_size(const std::string& text) {
+  const std::string t = trim(text);
+  const auto x = t.find('x');
+  const std::string msg = "--png-size: '" + t + "' is not WxH with W and H in 16 .. 8192";
+  if (x == std::string::npos) throw std::invalid_argument(msg);
+  std::array<int, 2> size{};
+  const std::string parts[2] = {t.substr(0, x), t.substr(x + 1)};
+  for (int k = 0; k < 2; ++k) {
+    if (parts[k].empty() || parts[k].size() > 4 || parts[k].find_first_not_of("0123456789") != std::string::npos)
+      throw std::invalid_argument(msg);
+    size[k] = std::stoi(parts[k]);
+    if (size[k] < 16 || size[k] > 8192) throw std::invalid_argument(msg);
+  }
+  return size;
+}
+
 nlohmann::ordered_json exact_json(const Exact& x) { return nlohmann::ordered_json(exact_to_json(x)); }
 
 nlohmann::ordered_json point_json(const Point2& p) { return nlohmann::ordered_json::array({exact_json(p.x), exact_json(p.y)}); }

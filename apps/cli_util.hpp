@@ -63,6 +63,10 @@ int check_thread_count(int threads, const std::string& what);
 // whole numbers NX,NY,NZ, each 1 .. 100000 ('T')" or "--grid: more than 10^8 cells".
 std::array<long, 3> parse_grid(const std::string& text);
 
+// --png-size "WxH": the picture's width and height in pixels, each 16 .. 8192; throws "--png-size: 'T' is
+// not WxH with W and H in 16 .. 8192".
+std::array<int, 2> parse_png_size(const std::string& text);
+
 // ---- JSON
 // An exact value in ordered JSON (the subcommands keep their documented key order): io/json_number.hpp.
 nlohmann::ordered_json exact_json(const Exact& x);
