@@ -62,7 +62,7 @@ class PairQuery {
         ++stats_.effective_occluders;
       }
       std::vector<Piece> outside;
-      split(piece.cone, piece.test, occluders_[j], 0, false, false, outside);
+      split(std::move(piece.cone), std::move(piece.test), occluders_[j], 0, false, false, outside);
       for (auto& p : outside) {
         p.next = j + 1;
         stack.push_back(std::move(p));
@@ -92,17 +92,18 @@ class PairQuery {
   }
 
   // Pieces of cone minus the occluder's line set: lines that pass the edges with mixed signs.
-  void split(const PolyhedralCone6& cone, const RealLineTest& t, const ShaftOccluder& occ, std::size_t k, bool pos,
+  // cone and t are taken by value and moved along: a surviving piece is never copied.
+  void split(PolyhedralCone6 cone, RealLineTest t, const ShaftOccluder& occ, std::size_t k, bool pos,
              bool neg, std::vector<Piece>& out) {
     if (pos && neg) {
-      out.push_back(Piece{cone, t, 0});
+      out.push_back(Piece{std::move(cone), std::move(t), 0});
       return;
     }
     if (k == occ.edges.size()) return;  // every edge passed on one side: the lines hit the occluder
     const IntVec6& w = occ.edges[k];
     const HalfspaceRelation r = relation_to_halfspace(cone, w, occ.edges_approx[k]);
-    if (r == HalfspaceRelation::Inside) return split(cone, t, occ, k + 1, true, neg, out);
-    if (r == HalfspaceRelation::Outside) return split(cone, t, occ, k + 1, pos, true, out);
+    if (r == HalfspaceRelation::Inside) return split(std::move(cone), std::move(t), occ, k + 1, true, neg, out);
+    if (r == HalfspaceRelation::Outside) return split(std::move(cone), std::move(t), occ, k + 1, pos, true, out);
     for (int s : {+1, -1}) {
       IntVec6 ws = w;
       Approx6 wa = occ.edges_approx[k];
@@ -116,7 +117,7 @@ class PairQuery {
       ++stats_.cones_created;
       RealLineTest pt = test(*part);
       if (!pt.has_real_lines) continue;
-      split(*part, pt, occ, k + 1, pos || s > 0, neg || s < 0, out);
+      split(std::move(*part), std::move(pt), occ, k + 1, pos || s > 0, neg || s < 0, out);
     }
   }
 
