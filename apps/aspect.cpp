@@ -173,11 +173,11 @@ int run_general_orthographic(const AspectOptions& o, const Scene& scene, const s
   if (!o.output.empty())
     outputs.write(o.output, [&](const std::string& temp) {
       std::ofstream out(temp);
-      out << j.dump(1) << "\n";
+      out << app::json_text(j);
       return static_cast<bool>(out);
     });
   outputs.commit();
-  if (o.json) std::cout << j.dump(1) << "\n";
+  if (o.json) std::cout << app::json_text(j);
   else
     std::cout << summary(g, "a non-convex closed model with " + std::to_string(scene.triangles.size()) +
                                 " triangles (" + std::to_string(circles) + " great circles)")
@@ -226,7 +226,7 @@ int run(const AspectOptions& o) {
   if (!o.output.empty())
     outputs.write(o.output, [&](const std::string& temp) {
       std::ofstream out(temp);
-      out << j.dump(1) << "\n";
+      out << app::json_text(j);
       return static_cast<bool>(out);
     });
   if (!o.vtp.empty()) {
@@ -250,7 +250,7 @@ int run(const AspectOptions& o) {
     outputs.write(o.png, [&](const std::string& temp) { return render_panels_png(temp, panels, 480), true; });
   }
   outputs.commit();
-  if (o.json) std::cout << j.dump(1) << "\n";
+  if (o.json) std::cout << app::json_text(j);
   else std::cout << summary(g, "a convex model with " + std::to_string(model.planes.size()) + " face planes") << "\n";
   return 0;
 }

@@ -108,7 +108,7 @@ int run(const Aspect2DOptions& o) {
     j["adjacency"] = g.adjacency;
     const Ring2D& fr = g.framed.rings[g.framed.frame_ring];
     j["frame"] = {point_json(g.framed.points[fr.first]), point_json(g.framed.points[fr.first + 2])};
-    std::cout << j.dump(1) << "\n";
+    std::cout << app::json_text(j);
   } else {
     std::cout << "regions " << g.regions.size() << ", adjacencies " << g.adjacency.size() << ", arrangement faces "
               << g.arrangement_faces << ", candidate event segments " << g.event_segments << "\n";

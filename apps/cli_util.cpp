@@ -154,6 +154,9 @@ std::array<int, 2> parse_png_size(const std::string& text) {
   return size;
 }
 
+std::string json_text(const nlohmann::json& j) { return j.dump(2) + "\n"; }
+std::string json_text(const nlohmann::ordered_json& j) { return j.dump(2) + "\n"; }
+
 nlohmann::ordered_json exact_json(const Exact& x) { return nlohmann::ordered_json(exact_to_json(x)); }
 
 nlohmann::ordered_json point_json(const Point2& p) { return nlohmann::ordered_json::array({exact_json(p.x), exact_json(p.y)}); }

@@ -68,6 +68,10 @@ std::array<long, 3> parse_grid(const std::string& text);
 std::array<int, 2> parse_png_size(const std::string& text);
 
 // ---- JSON
+// The text of a JSON document as every subcommand prints (--json) or writes (-o) it: indented by 2 spaces,
+// then a newline. JSON-lines output (pvs --jsonl) is the exception: one compact line per record.
+std::string json_text(const nlohmann::json& j);
+std::string json_text(const nlohmann::ordered_json& j);
 // An exact value in ordered JSON (the subcommands keep their documented key order): io/json_number.hpp.
 nlohmann::ordered_json exact_json(const Exact& x);
 nlohmann::ordered_json point_json(const Point2& p);

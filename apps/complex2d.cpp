@@ -19,17 +19,17 @@ using namespace exactvis;
 
 struct Complex2DOptions {
   std::string scene, slice, svg, vtp;
-  bool json = false;
+  bool json = false, quiet = false;
 };
 
 int run(const Complex2DOptions& o) {
   OutputFiles outputs({o.svg, o.vtp});  // fails now, not after the work, when an output cannot be created
   const Scene2D scene = load_scene2d(o.scene, o.slice);
-  const app::FractionProgress progress("complex2d: sweeps", scene.num_vertices() > 2000 && app::progress_wanted(false));
+  const app::FractionProgress progress("complex2d: sweeps", scene.num_vertices() > 2000 && app::progress_wanted(o.quiet));
   const VisibilityComplex2D cx = visibility_complex(scene, progress.callback());
   const auto& B = cx.graph.bitangents;
   if (o.json) {
-    std::cout << api::complex2d_json(scene, cx).dump(1) << "\n";
+    std::cout << app::json_text(api::complex2d_json(scene, cx));
   } else {
     std::cout << "objects " << scene.num_objects << ", vertices " << scene.num_vertices() << "\n"
               << "bitangents " << B.size() << ", edges " << cx.edges.size() << ", faces " << cx.faces.size()
@@ -93,6 +93,7 @@ const exactvis::app::CommandRegistration registration(
       sub->add_flag("--json", opts->json, "print the complex as JSON on stdout");
       sub->add_option("--svg", opts->svg, "write a picture (objects, bitangents, maximal free segments)");
       sub->add_option("--vtp", opts->vtp, "write objects and bitangents as VTK PolyData");
+      sub->add_flag("-q,--quiet", opts->quiet, "No progress bar on stderr");
       return [opts] { return run(*opts); };
     });
 

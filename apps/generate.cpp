@@ -1,8 +1,10 @@
-// `exactvis generate KIND --triangles N --seed S -o FILE`: a deterministic test scene.
+// `exactvis generate KIND --triangles N --seed S -o FILE [--json] [-q]`: a deterministic test scene.
 #include "apps/cli_util.hpp"
 #include "apps/command_registry.hpp"
 #include "io/write_mesh.hpp"
 #include "kernel/scene_generators.hpp"
+
+#include <nlohmann/json.hpp>
 
 #include <iostream>
 
@@ -13,12 +15,22 @@ struct GenerateOptions {
   std::int64_t triangles = 1000;
   std::string seed = "1";
   std::string output;
+  bool json = false, quiet = false;
 };
 
 int run_generate(const GenerateOptions& o) {
   const exactvis::Scene scene = exactvis::generate_scene(o.kind, o.triangles, exactvis::app::parse_uint64(o.seed, "--seed"));
   exactvis::write_scene_mesh(o.output, scene);
-  std::cerr << o.output << ": " << scene.triangles.size() << " triangles, " << scene.objects.size() << " objects\n";
+  if (o.json) {
+    nlohmann::ordered_json j;
+    j["file"] = o.output;
+    j["kind"] = o.kind;
+    j["triangles"] = scene.triangles.size();
+    j["objects"] = scene.objects.size();
+    std::cout << exactvis::app::json_text(j);
+  } else if (!o.quiet) {
+    std::cerr << o.output << ": " << scene.triangles.size() << " triangles, " << scene.objects.size() << " objects\n";
+  }
   return 0;
 }
 
@@ -36,6 +48,8 @@ const exactvis::app::CommandRegistration registration("generate", 20, [](CLI::Ap
       ->check(CLI::NonNegativeNumber);
   sub->add_option("-o,--output", opts->output, "Output file (.obj with a group per object, .off, .ply, .stl)")
       ->required();
+  sub->add_flag("--json", opts->json, "Print {\"file\", \"kind\", \"triangles\", \"objects\"} as JSON on stdout");
+  sub->add_flag("-q,--quiet", opts->quiet, "Nothing on stderr but errors");
   return [opts]() { return run_generate(*opts); };
 });
 

@@ -10,7 +10,7 @@ namespace {
 
 struct InfoOptions {
   std::vector<std::string> scenes;
-  bool json = false;
+  bool json = false, quiet = false;  // quiet: accepted by every subcommand; info draws no progress
 };
 
 int run_info(const InfoOptions& o) {
@@ -48,6 +48,7 @@ const exactvis::app::CommandRegistration registration("info", 10, [](CLI::App& p
   CLI::App* sub = parent.add_subcommand("info", "Print scene statistics (triangles, objects, bounding box, ...)");
   sub->add_option("scene", opts->scenes, "Scene files (.obj .ply .off .stl), loaded as one scene")->required();
   sub->add_flag("--json", opts->json, "Machine-readable JSON on stdout");
+  sub->add_flag("-q,--quiet", opts->quiet, "No progress bar on stderr (accepted by every subcommand; this one draws none)");
   return [opts]() { return run_info(*opts); };
 });
 

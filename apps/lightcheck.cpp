@@ -26,7 +26,7 @@ struct LightcheckOptions {
   std::string scene;
   std::vector<std::string> lights;
   std::string points;
-  bool json = false;
+  bool json = false, quiet = false;  // quiet: accepted by every subcommand; lightcheck draws no progress
 };
 
 // One point per line: three numbers (decimal, or num/den exactly) separated by spaces, tabs or commas; blank
@@ -134,6 +134,7 @@ const exactvis::app::CommandRegistration registration("lightcheck", 121, [](CLI:
   sub->add_option("--points", opts->points, "Text file: one point 'x y z' per line (decimals or num/den)")
       ->required();
   sub->add_flag("--json", opts->json, "Machine-readable JSON on stdout");
+  sub->add_flag("-q,--quiet", opts->quiet, "No progress bar on stderr (accepted by every subcommand; this one draws none)");
   return [opts]() { return run_lightcheck(*opts); };
 });
 

@@ -286,11 +286,11 @@ int run_pvs(const PvsCliOptions& o) {
     if (!o.output.empty()) {
       doc_output->write(o.output, [&](const std::string& temp) {
         std::ofstream out(temp);
-        out << doc.dump() << "\n";
+        out << app::json_text(doc);
         return static_cast<bool>(out);
       });
     } else if (o.json) {
-      std::cout << doc.dump() << "\n";
+      std::cout << app::json_text(doc);
     }
   }
   if (doc_output) doc_output->commit();

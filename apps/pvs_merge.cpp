@@ -1,5 +1,6 @@
 // `exactvis pvs-merge SHARD... -o pvs.json`: joins the outputs of `exactvis pvs --shard K/N` runs (JSON
 // documents or JSON lines, in any order) into the document a single unsharded run writes.
+#include "apps/cli_util.hpp"
 #include "apps/command_registry.hpp"
 #include "io/atomic_file.hpp"
 #include "io/load_scene.hpp"
@@ -17,6 +18,7 @@ using namespace exactvis;
 struct MergeOptions {
   std::vector<std::string> inputs;
   std::string output;
+  bool json = false, quiet = false;
 };
 
 struct ShardFile {
@@ -114,10 +116,13 @@ int run_merge(const MergeOptions& o) {
   const OrderedJson doc = pvs_document(first->scene, first->triangles, std::move(all));
   outputs.write(o.output, [&](const std::string& temp) {
     std::ofstream out(temp);
-    out << doc.dump() << "\n";
+    out << exactvis::app::json_text(doc);
     return static_cast<bool>(out);
   });
   outputs.commit();
+  if (o.json) std::cout << exactvis::app::json_text(doc);
+  else if (!o.quiet)
+    std::cout << "merged " << cells.size() << " cells from " << o.inputs.size() << " files into " << o.output << "\n";
   return 0;
 }
 
@@ -127,6 +132,8 @@ const exactvis::app::CommandRegistration registration("pvs-merge", 111, [](CLI::
       "pvs-merge", "Join the outputs of `exactvis pvs --shard K/N` runs into the file of one unsharded run");
   sub->add_option("shards", o->inputs, "Shard outputs (JSON documents or JSON lines)")->required();
   sub->add_option("-o,--output", o->output, "The merged PVS document")->required();
+  sub->add_flag("--json", o->json, "Also print the merged document on stdout");
+  sub->add_flag("-q,--quiet", o->quiet, "No summary line on stdout");
   return [o]() { return run_merge(*o); };
 });
 

@@ -26,6 +26,7 @@ using namespace exactvis;
 struct Visibility2DOptions {
   std::string scene, slice, from, svg, from_segment, to_segment, method = "complex";
   double margin = 0.5;
+  bool json = false, quiet = false;  // JSON is the only output form; no progress is drawn
 };
 
 using ojson = nlohmann::ordered_json;  // keeps the documented key order ("counts" first)
@@ -78,7 +79,7 @@ int run_segments(const Visibility2DOptions& o) {
   j["visible"] = r.visible;
   j["witness"] = r.visible ? ojson::array({point_json(r.witness_s), point_json(r.witness_t)}) : ojson();
   j["candidates_tested"] = r.candidates;
-  std::cout << j.dump(1) << "\n";
+  std::cout << app::json_text(j);
   if (!o.svg.empty()) {
     SvgDocument2D doc = svg_document(scene);
     svg_scene(doc, scene);
@@ -137,7 +138,7 @@ int run(const Visibility2DOptions& o) {
     if (scene.ring_of[e] != scene.frame_ring)
       j["visible_edges"].push_back({{"edge", e}, {"object", scene.object_of(e)},
                                     {"a", point_json(scene.points[e])}, {"b", point_json(scene.points[scene.next[e]])}});
-  std::cout << j.dump(1) << "\n";
+  std::cout << app::json_text(j);
   if (!o.svg.empty()) {
     SvgDocument2D doc = svg_document(scene);
     std::vector<std::array<double, 2>> ring;
@@ -165,6 +166,8 @@ const exactvis::app::CommandRegistration registration(
                       "around the point, or the O(n^4) cell sampling for segments (same answers)");
       sub->add_option("--margin", opts->margin, "frame margin around the scene, relative to its size (default 0.5)");
       sub->add_option("--svg", opts->svg, "write a picture of the visibility polygon");
+      sub->add_flag("-q,--quiet", opts->quiet, "No progress bar on stderr (accepted by every subcommand; this one draws none)");
+      sub->add_flag("--json", opts->json, "The answer as JSON on stdout (the only output form: accepted for uniformity)");
       return [opts] { return run(*opts); };
     });
 
