@@ -220,10 +220,12 @@ AspectGraph3 orthographic_aspect_graph(const Scene& scene, const ClosedSolidFron
   };
   AspectGraph3 out;
   out.view = ViewModel::Orthographic;
+  out.circles = s.circles.normals;
   for (int c = 0; c < nc; ++c)
     if (keep[c]) {
       ++out.cells[cells[c].dimension];
-      out.sampled_cells.push_back({regions.region_of[c], cells[c].dimension, scaled(arr.cells[c].sample)});
+      out.sampled_cells.push_back(
+          {regions.region_of[c], cells[c].dimension, scaled(arr.cells[c].sample), arr.cells[c].signs});
     }
   const std::size_t n = scene.triangles.size();
   for (std::size_t r = 0; r < regions.members.size(); ++r) {
