@@ -49,6 +49,14 @@ Point3 unit(const Point3& p) {
   return {p.x / l, p.y / l, p.z / l};
 }
 
+// The sum of a picture triangle's three corners (3 times its centroid).
+Point3 corner_sum(const PartitionPicture& pic, const std::array<int, 3>& t) {
+  const Point3& a = pic.points[t[0]];
+  const Point3& b = pic.points[t[1]];
+  const Point3& c = pic.points[t[2]];
+  return {a.x + b.x + c.x, a.y + b.y + c.y, a.z + b.z + c.z};
+}
+
 // The unit sphere: an octahedron subdivided `subdivisions` times (points and triangles only).
 PartitionPicture subdivided_sphere(int subdivisions) {
   PartitionPicture pic;
@@ -108,10 +116,7 @@ PartitionPicture sphere_picture(const ConvexModel& model, const AspectGraph3& gr
   const auto P = planes_d(model);
   const RegionLookup lookup(model, graph);
   for (const auto& t : pic.triangles) {
-    const Point3& a = pic.points[t[0]];
-    const Point3& b = pic.points[t[1]];
-    const Point3& c = pic.points[t[2]];
-    const Point3 d{a.x + b.x + c.x, a.y + b.y + c.y, a.z + b.z + c.z};
+    const Point3 d = corner_sum(pic, t);
     pic.triangle_region.push_back(lookup([&](std::size_t k) { return P[k].n[0] * d.x + P[k].n[1] * d.y + P[k].n[2] * d.z; }));
   }
   std::vector<Point3> normals;
@@ -128,10 +133,7 @@ PartitionPicture sphere_picture_of_cells(const AspectGraph3& graph, int subdivis
   for (const auto& n : graph.circles) normals.push_back({CGAL::to_double(n.x), CGAL::to_double(n.y), CGAL::to_double(n.z)});
   std::string signs(graph.circles.size(), '0');
   for (const auto& t : pic.triangles) {
-    const Point3& a = pic.points[t[0]];
-    const Point3& b = pic.points[t[1]];
-    const Point3& c = pic.points[t[2]];
-    const Point3 d{a.x + b.x + c.x, a.y + b.y + c.y, a.z + b.z + c.z};
+    const Point3 d = corner_sum(pic, t);
     for (std::size_t k = 0; k < normals.size(); ++k) {
       // Doubles decide when clearly away from the circle; else exactly (the double centroid as rationals).
       const double f = normals[k].x * d.x + normals[k].y * d.y + normals[k].z * d.z;
@@ -161,10 +163,8 @@ PartitionPicture plane_picture(const ConvexModel& model, const AspectGraph3& gra
   const auto P = planes_d(model);
   const RegionLookup lookup(model, graph);
   for (const auto& t : pic.triangles) {
-    const Point3& a = pic.points[t[0]];
-    const Point3& b = pic.points[t[1]];
-    const Point3& c = pic.points[t[2]];
-    const Point3 p{(a.x + b.x + c.x) / 3, (a.y + b.y + c.y) / 3, h};
+    const Point3 m = corner_sum(pic, t);
+    const Point3 p{m.x / 3, m.y / 3, h};
     pic.triangle_region.push_back(
         lookup([&](std::size_t k) { return P[k].n[0] * p.x + P[k].n[1] * p.y + P[k].n[2] * p.z - P[k].c; }));
   }
