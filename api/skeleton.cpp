@@ -1,6 +1,7 @@
 #include "api/skeleton.hpp"
 
 #include "io/write_skeleton_json.hpp"
+#include "util/text_split.hpp"
 
 #include <stdexcept>
 #include <vector>
@@ -26,13 +27,7 @@ SkeletonPairSide pair_side(const Scene& scene, const std::string& text, const st
 }  // namespace
 
 std::pair<SkeletonPairSide, SkeletonPairSide> parse_skeleton_pair(const Scene& scene, const std::string& spec) {
-  std::vector<std::string> items;
-  std::size_t start = 0;
-  for (std::size_t i = 0; i <= spec.size(); ++i)
-    if (i == spec.size() || spec[i] == ',') {
-      items.push_back(spec.substr(start, i - start));
-      start = i + 1;
-    }
+  const std::vector<std::string> items = split(spec, ',');
   if (items.size() != 2 || items[0].empty() || items[1].empty())
     throw std::invalid_argument("--pair '" + spec + "': expected two objects A,B (object names or triangle ids)");
   return {pair_side(scene, items[0], spec), pair_side(scene, items[1], spec)};

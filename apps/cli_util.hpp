@@ -13,6 +13,7 @@
 #include "region/cell_visibility.hpp"
 #include "region/convex_polygon_3.hpp"
 #include "util/progress_bar.hpp"
+#include "util/text_split.hpp"
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
@@ -26,11 +27,9 @@
 
 namespace exactvis::app {
 
-// ---- text
-// The items of s between separators, empty ones included ("a,,b" -> a, "", b; "a," -> a, ""; "" -> none).
-std::vector<std::string> split(const std::string& s, char sep);
-// s without leading and trailing spaces and tabs.
-std::string trim(const std::string& s);
+// ---- text: split and trim (util/text_split.hpp)
+using exactvis::split;
+using exactvis::trim;
 
 // ---- numbers
 // The double a complete decimal/scientific literal denotes (nearest double; subnormal results and results

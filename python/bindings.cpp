@@ -5,6 +5,7 @@
 #include "api/complex2d.hpp"
 #include "api/events.hpp"
 #include "api/pvs.hpp"
+#include "api/shadows.hpp"
 #include "api/skeleton.hpp"
 #include "api/version.hpp"
 #include "api/visible.hpp"
@@ -22,6 +23,7 @@
 #include <mpfr.h>
 
 #include <mutex>
+#include <set>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -290,6 +292,42 @@ std::string run_skeleton(const Scene& scene, std::optional<std::string> pair, py
   return text;
 }
 
+// shadows: the JSON text of `exactvis shadows --json`; `lights` as repeated --light SPEC, `receivers` as
+// --receivers (the scene is a copy: a polygon light is appended to it).
+std::string run_shadows(Scene scene, const std::string& scene_name, const std::vector<std::string>& lights,
+                        const std::string& receivers, py::object progress) {
+  if (lights.empty()) throw std::invalid_argument("--light is required");
+  shadows::ShadowOptions options;
+  std::set<int> light;
+  for (const auto& spec : lights)
+    for (int t : app::parse_light(scene, spec).triangles)
+      if (light.insert(t).second) options.light.push_back(t);
+  options.receivers = api::parse_receivers(scene, receivers, options.light);
+  if (options.receivers.empty() && light.size() == scene.triangles.size())
+    throw std::invalid_argument(scene_name + ": no receiver triangles (every triangle is part of the light)");
+  options.vertex_irradiance = false;  // only the mesh files need it
+  PythonProgress report(progress);
+  BarsToPython observer(report);
+  std::string text;
+  {
+    py::gil_scoped_release release;
+    std::unique_lock<std::mutex> lock(observed_call_mutex, std::defer_lock);
+    if (report.active()) {
+      lock.lock();
+      set_progress_observer(&observer);
+    }
+    try {
+      text = api::shadows_json(scene, api::shadows(scene, options), options.light).dump();
+    } catch (...) {
+      if (report.active()) set_progress_observer(nullptr);
+      throw;
+    }
+    if (report.active()) set_progress_observer(nullptr);
+  }
+  report.rethrow();
+  return text;
+}
+
 // The 2D complex's progress: a plain function pointer, so one Python callback at a time per process.
 std::mutex complex2d_mutex;
 PythonProgress* complex2d_progress = nullptr;
@@ -378,5 +416,7 @@ PYBIND11_MODULE(_exactvis, m) {
         py::arg("grid"), py::arg("box"), py::arg("method"), py::arg("samples"), py::arg("rays"), py::arg("seed"),
         py::arg("threads"), py::arg("witnesses"), py::arg("hierarchy"), py::arg("progress"));
   m.def("_skeleton", &run_skeleton, py::arg("scene"), py::arg("pair"), py::arg("progress"));
+  m.def("_shadows", &run_shadows, py::arg("scene"), py::arg("scene_name"), py::arg("lights"), py::arg("receivers"),
+        py::arg("progress"));
   m.def("_complex2d", &run_complex2d, py::arg("json_text"), py::arg("name"), py::arg("slice"), py::arg("progress"));
 }

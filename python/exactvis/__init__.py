@@ -8,6 +8,8 @@ The jobs of the ``exactvis`` command line, one call each (docs/python.md has a w
 - ``pvs(V, F, cells=[(x0, y0, z0, x1, y1, z1), ...])`` or ``pvs(V, F, grid=(nx, ny, nz))`` -> dict, the JSON
   of ``exactvis pvs --json``: per view cell the visible triangles and objects, with exact witnesses.
 - ``skeleton(V, F, pair=None)`` -> dict, the JSON of ``exactvis skeleton --json``.
+- ``shadows(V, F, light="lamp")`` -> dict, the JSON of ``exactvis shadows --json``: the exact
+  discontinuity mesh of area lights (umbra, penumbra, lit faces with backprojections and irradiance).
 - ``complex2d(polygons)`` -> dict, the JSON of ``exactvis complex2d --json``.
 - ``load_scene(path, ...)`` -> ``Scene`` (``.vertices``, ``.faces``, ``.ids``, ``.objects``, ``.object_names``).
 
@@ -35,7 +37,7 @@ from . import _exactvis
 from ._exactvis import Scene
 
 __version__ = _exactvis.__version__
-__all__ = ["Scene", "load_scene", "visible", "events", "pvs", "skeleton", "complex2d", "fraction", "__version__"]
+__all__ = ["Scene", "load_scene", "visible", "events", "pvs", "skeleton", "shadows", "complex2d", "fraction", "__version__"]
 
 
 def fraction(x):
@@ -252,6 +254,36 @@ def skeleton(V, F=None, *, pair=None, progress=None):
     if pair is not None and not isinstance(pair, str):
         pair = ",".join(str(p) for p in pair)
     return _json.loads(_exactvis._skeleton(scene, pair, progress))
+
+
+def _light_text(light):
+    if isinstance(light, str):
+        return light
+    return ";".join(",".join(repr(float(c)) for c in p) for p in light)
+
+
+def shadows(V, F=None, *, light, receivers="all", progress=None):
+    """The exact discontinuity mesh of area lights (``exactvis shadows``; docs/theory.md section 11).
+
+    - light: the name of a scene object, a polygon [(x, y, z), ...] (or the command line's text
+      "x,y,z;x,y,z;x,y,z") appended to the scene as object "light", or a list of those (several lights,
+      joined into one light of exitance 1, as repeated ``--light``).
+    - receivers: "all" (every triangle not part of a light) or a sequence of triangle ids (``--receivers``).
+    - progress: called as progress(done, total) per stage (events, receivers), as for ``events``.
+
+    Returns the dict of ``exactvis shadows --json`` on the same scene: {"receivers": [{"triangle", "curves",
+    "faces"}], "counts", "light", "stats"} (``stats`` holds timings in seconds, which differ between runs).
+    Exact values as numbers or "num/den" strings; areas, fractions and irradiance are floats. Releases the GIL.
+    """
+    scene = _scene(V, F)
+    if isinstance(light, str) or (light and not isinstance(light[0], str) and _np.ndim(light[0]) == 1):
+        lights = [_light_text(light)]
+    else:
+        lights = [_light_text(l) for l in light]
+    if not isinstance(receivers, str):
+        receivers = ",".join(str(int(t)) for t in _np.asarray(receivers).ravel())
+    name = _os.fspath(V) if isinstance(V, (str, _os.PathLike)) else "scene"
+    return _json.loads(_exactvis._shadows(scene, name, lights, receivers, progress))
 
 
 def _json_exact(x):

@@ -410,3 +410,46 @@ def test_skeleton_bad_input_messages_as_cli(small_scene_file):
         with pytest.raises(ValueError) as e:
             exactvis.skeleton(small_scene_file, pair=pair)
         assert str(e.value) == cli_error("skeleton", small_scene_file, "--pair", pair, "-q")
+
+
+# ---- shadows
+
+def without_seconds(j):
+    j = dict(j)
+    j["stats"] = {k: v for k, v in j["stats"].items() if not k.startswith("seconds")}
+    return j
+
+
+def test_shadows_match_cli_json(tmp_path):
+    room = os.path.join(SOURCE, "scenes", "lamp_room.obj")
+    j = cli_json("shadows", room, "--light", "lamp", "--json", "-q")
+    calls = []
+    got = exactvis.shadows(room, light="lamp", progress=lambda d, t: calls.append((d, t)))
+    assert without_seconds(got) == without_seconds(j) and calls
+    c = j["counts"]
+    assert c["umbra"] > 0 and c["penumbra"] > 0 and c["lit"] > 0 and c["faces"] == c["umbra"] + c["penumbra"] + c["lit"]
+    # an exact re-check of one thing the mesh claims: each face's sample lies on its receiver's plane
+    scene = exactvis.load_scene(room)
+    for r in j["receivers"]:
+        tri = [[Fraction(float(x)) for x in scene.vertices[v]] for v in scene.faces[list(scene.ids).index(r["triangle"])]]
+        n = cross(sub(tri[1], tri[0]), sub(tri[2], tri[0]))
+        for f in r["faces"]:
+            assert dot(n, sub([exactvis.fraction(x) for x in f["sample"]], tri[0])) == 0
+    ids = [r["triangle"] for r in j["receivers"]][:2]
+    jr = cli_json("shadows", room, "--light", "lamp", "--receivers", ",".join(map(str, ids)), "--json", "-q")
+    assert without_seconds(exactvis.shadows(scene, light=["lamp"], receivers=ids)) == without_seconds(jr)
+    poly = [(1.75, 1.75, 2.25), (2.25, 1.75, 2.25), (2.25, 2.25, 2.25)]
+    jp = cli_json("shadows", room, "--light", "1.75,1.75,2.25;2.25,1.75,2.25;2.25,2.25,2.25", "--json", "-q")
+    assert without_seconds(exactvis.shadows(room, light=poly)) == without_seconds(jp)
+
+
+def test_shadows_bad_input_messages_as_cli():
+    room = os.path.join(SOURCE, "scenes", "lamp_room.obj")
+    for kwargs, args in [(dict(light="sun"), ["--light", "sun"]),
+                         (dict(light="lamp", receivers="1,x"), ["--light", "lamp", "--receivers", "1,x"]),
+                         (dict(light="lamp", receivers=[99]), ["--light", "lamp", "--receivers", "99"]),
+                         (dict(light="lamp", receivers=[14]), ["--light", "lamp", "--receivers", "14"])]:
+        with pytest.raises(ValueError) as e:
+            exactvis.shadows(room, **kwargs)
+        assert str(e.value) == cli_error("shadows", room, *args, "-q")
+
