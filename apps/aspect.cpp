@@ -88,7 +88,9 @@ Point3 approx(const Vec3<Exact>& v) { return {CGAL::to_double(v.x), CGAL::to_dou
 
 // The pictures of --png: the partition (sphere or plane; none for perspective space) and the model as seen
 // from the samples of up to three regions of the largest dimension (first, middle, last).
-std::vector<PngPanel> png_panels(const Scene& scene, const ConvexModel& model, const AspectGraph3& g, double h) {
+// `values` colours the model's triangles; `partition` is the sphere or plane picture (none for perspective).
+std::vector<PngPanel> png_panels(const Scene& scene, const std::vector<int>& values, const AspectGraph3& g,
+                                 const PartitionPicture* partition, double h) {
   std::vector<PngPanel> panels;
   const Box3 b = bounding_box(scene);
   const Point3 centre{(b.lo.x + b.hi.x) / 2, (b.lo.y + b.hi.y) / 2, (b.lo.z + b.hi.z) / 2};
@@ -97,12 +99,11 @@ std::vector<PngPanel> png_panels(const Scene& scene, const ConvexModel& model, c
     return std::abs(d.z) > 0.9 * std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z) ? Point3{0, 1, 0} : Point3{0, 0, 1};
   };
   if (g.view == ViewModel::Orthographic) {
-    const PartitionPicture pic = sphere_picture(model, g, 5);
+    const PartitionPicture& pic = *partition;
     PngPanel p{pic.points, pic.triangles, pic.triangle_region, pic.curves, {0, 0, 0}, {1, 0.8, 0.6}, true, {0, 0, 1}};
     panels.push_back(std::move(p));
   } else if (g.view == ViewModel::Plane) {
-    const double w = std::max(b.hi.x - b.lo.x, b.hi.y - b.lo.y);
-    const PartitionPicture pic = plane_picture(model, g, h, b.lo.x - w, b.lo.y - w, b.hi.x + w, b.hi.y + w, 120);
+    const PartitionPicture& pic = *partition;
     panels.push_back({pic.points, pic.triangles, pic.triangle_region, pic.curves, {centre.x, centre.y, h},
                       {centre.x, centre.y, h + size}, true, {0, 1, 0}});
   }
@@ -117,7 +118,7 @@ std::vector<PngPanel> png_panels(const Scene& scene, const ConvexModel& model, c
     p.points = scene.vertices;
     for (std::size_t i = 0; i < scene.triangles.size(); ++i) {
       p.triangles.push_back(scene.triangles[i].v);
-      p.values.push_back(model.plane_of[i]);
+      p.values.push_back(values[i]);
     }
     const Point3 s = approx(g.regions[r].sample);
     p.focal = centre;
@@ -157,9 +158,6 @@ std::string cost_warning(std::size_t m, ViewModel view, const char* what = "face
 // convex, else a one-line error).
 int run_general_orthographic(const AspectOptions& o, const Scene& scene, const std::string& label,
                              OutputFiles& outputs) {
-  if (!o.vtp.empty() || !o.png.empty())
-    throw std::invalid_argument(std::string(o.vtp.empty() ? "--png" : "--vtp") +
-                                ": pictures of the aspect partition of non-convex models are not implemented yet");
   const ClosedSolidFronts fronts = closed_solid_fronts(scene);
   if (!fronts.ok) throw InputError(label + ": " + fronts.problem);
   const std::size_t circles = orthographic_aspect_circles(scene, fronts);
@@ -176,6 +174,21 @@ int run_general_orthographic(const AspectOptions& o, const Scene& scene, const s
       out << app::json_text(j);
       return static_cast<bool>(out);
     });
+  if (!o.vtp.empty() || !o.png.empty()) {
+    const PartitionPicture pic = sphere_picture_of_cells(g, o.vtp.empty() ? 5 : 6);
+    if (!o.vtp.empty())
+      outputs.write(o.vtp, [&](const std::string& temp) {
+        write_surface_with_lines_vtp(temp, pic.points, pic.triangles, pic.triangle_region, pic.curves,
+                                     std::vector<std::int64_t>(pic.curves.size(), -1), "region");
+        return true;
+      });
+    if (!o.png.empty()) {
+      std::vector<int> values(scene.triangles.size());
+      for (std::size_t i = 0; i < values.size(); ++i) values[i] = static_cast<int>(i);
+      const std::vector<PngPanel> panels = png_panels(scene, values, g, &pic, 0);
+      outputs.write(o.png, [&](const std::string& temp) { return render_panels_png(temp, panels, 480), true; });
+    }
+  }
   outputs.commit();
   if (o.json) std::cout << app::json_text(j);
   else
@@ -246,7 +259,15 @@ int run(const AspectOptions& o) {
     });
   }
   if (!o.png.empty()) {
-    const std::vector<PngPanel> panels = png_panels(scene, model, g, CGAL::to_double(height));
+    PartitionPicture partition;
+    if (o.orthographic) {
+      partition = sphere_picture(model, g, 5);
+    } else if (!o.plane.empty()) {
+      const Box3 b = bounding_box(scene);
+      const double w = std::max(b.hi.x - b.lo.x, b.hi.y - b.lo.y);
+      partition = plane_picture(model, g, CGAL::to_double(height), b.lo.x - w, b.lo.y - w, b.hi.x + w, b.hi.y + w, 120);
+    }
+    const std::vector<PngPanel> panels = png_panels(scene, model.plane_of, g, &partition, CGAL::to_double(height));
     outputs.write(o.png, [&](const std::string& temp) { return render_panels_png(temp, panels, 480), true; });
   }
   outputs.commit();

@@ -49,8 +49,10 @@ struct AspectGraph3 {
   struct SampledCell {
     int region = 0, dimension = 0;
     Vec3<Exact> direction;
+    std::string signs;  // per circle: the sign ('-', '0', '+') of circles[k] . d in this cell
   };
   std::vector<SampledCell> sampled_cells;
+  std::vector<Vec3<Exact>> circles;  // the great circles {n . d = 0} of the partition (their normals n)
 };
 
 }  // namespace exactvis

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <map>
 #include <set>
+#include <tuple>
 #include <stdexcept>
 #include <unordered_map>
 
@@ -58,9 +59,50 @@ struct Setup {
   Circles circles;
   std::vector<std::pair<int, char>> front_face;             // per triangle: plane, the char of "outer side"
   std::vector<bool> has_front;                              // per triangle: P_t non-empty
-  std::vector<std::array<std::vector<Constraint>, 3>> cones;  // per triangle, per corner
-  std::vector<std::array<bool, 3>> corner_in_front;         // the corner lies in P_t: hidden for every d
+  // Per triangle: t is hidden from a d on its outer side iff d is in the cone K = the intersection of its
+  // corners' cones K_a (corners in P_t excluded: their line always meets P_t), i.e. iff no constraint of
+  // `hidden_cone` sees its forbidden sign; `always_hidden`: every corner lies in P_t; `never_hidden`: K = {0}.
+  std::vector<std::vector<Constraint>> hidden_cone;
+  std::vector<bool> always_hidden, never_hidden;
 };
+
+// A supporting plane through a corner a of t: d in K_a needs sign(normal . d) in {side, 0}.
+struct RawConstraint {
+  Vec3<Exact> normal;
+  int side = 0;
+  int corner = 0;
+  std::size_t u = 0, w = 0;  // the two points of V_t spanning it with a
+};
+
+// The constraints that hold a facet of K = {d : sign(c.normal . d) in {c.side, 0} for all c} (those whose
+// plane contains an extreme ray of K: K is their intersection, the rest are redundant), all of them when K
+// has no extreme ray but is not {0} (a line or more of lineality), none when K = {0} (returns true then).
+// Extreme rays are among +-(n_i x n_j). Cost O(C^3) exact signs for C constraints.
+bool prune_to_facets(std::vector<RawConstraint>& cs) {
+  const auto inside = [&](const Vec3<Exact>& d) {
+    for (const auto& c : cs)
+      if (CGAL::sign(dot(c.normal, d)) == -c.side) return false;
+    return true;
+  };
+  std::vector<Vec3<Exact>> rays;
+  bool independent_pair = false;
+  for (std::size_t i = 0; i < cs.size(); ++i)
+    for (std::size_t j = i + 1; j < cs.size(); ++j) {
+      const Vec3<Exact> r = cross(cs[i].normal, cs[j].normal);
+      if (r.x == 0 && r.y == 0 && r.z == 0) continue;
+      independent_pair = true;
+      if (inside(r)) rays.push_back(r);
+      if (inside(-r)) rays.push_back(-r);
+    }
+  if (!independent_pair) return false;  // one plane (a half-space or the plane itself): keep all
+  if (rays.empty()) return cs.clear(), true;
+  std::vector<RawConstraint> kept;
+  for (const auto& c : cs)
+    if (std::any_of(rays.begin(), rays.end(), [&](const Vec3<Exact>& r) { return dot(c.normal, r) == 0; }))
+      kept.push_back(c);
+  cs = std::move(kept);
+  return false;
+}
 
 // Is a in conv(P)? (P spans 3D.) Exactly: a is on the inner closed side of every plane through three points
 // of P that has all of P on one closed side (those planes include the facets). Cost O(|P|^4), |P| small.
@@ -90,8 +132,9 @@ Setup setup(const Scene& scene, const ClosedSolidFronts& fronts) {
   Setup s;
   s.front_face.resize(n);
   s.has_front.resize(n);
-  s.cones.resize(n);
-  s.corner_in_front.assign(n, {false, false, false});
+  s.hidden_cone.resize(n);
+  s.always_hidden.assign(n, false);
+  s.never_hidden.assign(n, false);
   std::set<std::pair<int, int>> edge_set;
   for (const auto& t : scene.triangles)
     for (int k = 0; k < 3; ++k) edge_set.insert(std::minmax(t.v[k], t.v[(k + 1) % 3]));
@@ -109,14 +152,14 @@ Setup setup(const Scene& scene, const ClosedSolidFronts& fronts) {
     const auto& P = fronts.fronts[i].points;
     s.has_front[i] = !P.empty();
     if (P.empty()) continue;
+    std::vector<RawConstraint> raw;
+    std::set<std::tuple<ExactKey, int, int>> unique_halfspaces;
+    bool free_corner = false;
     for (int k = 0; k < 3; ++k) {
       const Vec3<Exact>& a = vx[t.v[k]];
       // The line through a meets P_t at a itself: this corner is in the closed shadow for every d.
-      if (in_hull(a, P)) {
-        s.corner_in_front[i][k] = true;
-        continue;
-      }
-      std::set<std::pair<int, char>> seen;
+      if (in_hull(a, P)) continue;
+      free_corner = true;
       for (std::size_t u = 0; u < P.size(); ++u)
         for (std::size_t w = u + 1; w < P.size(); ++w) {
           const Vec3<Exact> nv = cross(P[u] - a, P[w] - a);
@@ -131,33 +174,49 @@ Setup setup(const Scene& scene, const ClosedSolidFronts& fronts) {
             else if (sp != side) { supporting = false; break; }
           }
           if (!supporting || side == 0) continue;
-          const auto [pl, o] = s.circles.add(nv);
-          // d in K_a needs sign(nv . d) in {side, 0}: the opposite sign is forbidden.
-          const char forbidden = char_of(-side, o);
-          if (!seen.insert({pl, forbidden}).second) continue;
-          s.cones[i][k].push_back({pl, forbidden});
-          auto& gens = s.circles.generators[pl];
-          const bool named = std::any_of(gens.begin(), gens.end(), [&](const Generator& g) {
-            return g.triangle == static_cast<int>(i) && g.vertex == t.v[k];
-          });
-          if (named) continue;
-          // Name the circle by an edge in the plane through a (not through a), preferring one on the line uw.
-          Generator g{static_cast<int>(i), t.v[k], {-1, -1}};
-          bool on_line = false;
-          for (const Edge& e : edges) {
-            if (e.a == t.v[k] || e.b == t.v[k]) continue;
-            const Vec3<Exact>& A = vx[e.a];
-            const Vec3<Exact>& B = vx[e.b];
-            if (dot(nv, A - a) != 0 || dot(nv, B - a) != 0) continue;
-            const Vec3<Exact> c = cross(B - A, a - A);
-            if (c.x == 0 && c.y == 0 && c.z == 0) continue;  // a on the edge's line: no EV set
-            const Vec3<Exact> d1 = cross(P[w] - P[u], A - P[u]), d2 = cross(P[w] - P[u], B - P[u]);
-            const bool collinear_uw = d1.x == 0 && d1.y == 0 && d1.z == 0 && d2.x == 0 && d2.y == 0 && d2.z == 0;
-            if (g.edge[0] < 0 || (collinear_uw && !on_line)) g.edge = {e.a, e.b}, on_line = collinear_uw;
-            if (on_line) break;
-          }
-          gens.push_back(g);
+          // One constraint per half-space (normal up to positive scaling, and side) and corner.
+          int m = 0;
+          for (int c = 1; c < 3; ++c)
+            if (CGAL::abs(nv[c]) > CGAL::abs(nv[m])) m = c;
+          const Exact sc = CGAL::abs(nv[m]);
+          const int hs = side;
+          if (unique_halfspaces.insert({ExactKey{nv.x / sc, nv.y / sc, nv.z / sc}, hs, k}).second)
+            raw.push_back({nv, side, k, u, w});
         }
+    }
+    if (!free_corner) {
+      s.always_hidden[i] = true;
+      continue;
+    }
+    if (prune_to_facets(raw)) {
+      s.never_hidden[i] = true;
+      continue;
+    }
+    std::set<std::pair<int, char>> seen;
+    std::set<std::pair<int, int>> named;  // (plane, corner vertex)
+    for (const RawConstraint& rc : raw) {
+      const auto [pl, o] = s.circles.add(rc.normal);
+      const char forbidden = char_of(-rc.side, o);
+      if (seen.insert({pl, forbidden}).second) s.hidden_cone[i].push_back({pl, forbidden});
+      const int vtx = t.v[rc.corner];
+      if (!named.insert({pl, vtx}).second) continue;
+      // Name the circle by an edge in the plane through a (not through a), preferring one on the line uw.
+      const Vec3<Exact>& a = vx[vtx];
+      Generator g{static_cast<int>(i), vtx, {-1, -1}};
+      bool on_line = false;
+      for (const Edge& e : edges) {
+        if (e.a == vtx || e.b == vtx) continue;
+        const Vec3<Exact>& A = vx[e.a];
+        const Vec3<Exact>& B = vx[e.b];
+        if (dot(rc.normal, A - a) != 0 || dot(rc.normal, B - a) != 0) continue;
+        const Vec3<Exact> c = cross(B - A, a - A);
+        if (c.x == 0 && c.y == 0 && c.z == 0) continue;  // a on the edge's line: no EV set
+        const Vec3<Exact> d1 = cross(P[rc.w] - P[rc.u], A - P[rc.u]), d2 = cross(P[rc.w] - P[rc.u], B - P[rc.u]);
+        const bool collinear_uw = d1.x == 0 && d1.y == 0 && d1.z == 0 && d2.x == 0 && d2.y == 0 && d2.z == 0;
+        if (g.edge[0] < 0 || (collinear_uw && !on_line)) g.edge = {e.a, e.b}, on_line = collinear_uw;
+        if (on_line) break;
+      }
+      s.circles.generators[pl].push_back(g);
     }
   }
   return s;
@@ -169,14 +228,10 @@ std::string aspect_key(const Setup& s, const std::string& signs) {
   std::string key(n, '0');
   for (std::size_t i = 0; i < n; ++i) {
     if (signs[s.front_face[i].first] != s.front_face[i].second) continue;  // inner side or edge-on
-    bool seen = !s.has_front[i];
-    for (int k = 0; k < 3 && !seen; ++k) {
-      if (s.corner_in_front[i][k]) continue;
-      bool inside = true;  // d in K_a: the corner's line meets the front part
-      for (const Constraint& c : s.cones[i][k])
-        if (signs[c.plane] == c.forbidden) { inside = false; break; }
-      seen = !inside;
-    }
+    bool seen = !s.has_front[i] || s.never_hidden[i];
+    if (!seen && !s.always_hidden[i])
+      for (const Constraint& c : s.hidden_cone[i])
+        if (signs[c.plane] == c.forbidden) { seen = true; break; }  // d outside K: some corner's line is free
     if (seen) key[i] = '1';
   }
   return key;
@@ -220,10 +275,12 @@ AspectGraph3 orthographic_aspect_graph(const Scene& scene, const ClosedSolidFron
   };
   AspectGraph3 out;
   out.view = ViewModel::Orthographic;
+  out.circles = s.circles.normals;
   for (int c = 0; c < nc; ++c)
     if (keep[c]) {
       ++out.cells[cells[c].dimension];
-      out.sampled_cells.push_back({regions.region_of[c], cells[c].dimension, scaled(arr.cells[c].sample)});
+      out.sampled_cells.push_back(
+          {regions.region_of[c], cells[c].dimension, scaled(arr.cells[c].sample), arr.cells[c].signs});
     }
   const std::size_t n = scene.triangles.size();
   for (std::size_t r = 0; r < regions.members.size(); ++r) {

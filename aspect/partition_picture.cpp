@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <string>
+#include <unordered_map>
 
 namespace exactvis {
 
@@ -47,9 +49,16 @@ Point3 unit(const Point3& p) {
   return {p.x / l, p.y / l, p.z / l};
 }
 
-}  // namespace
+// The sum of a picture triangle's three corners (3 times its centroid).
+Point3 corner_sum(const PartitionPicture& pic, const std::array<int, 3>& t) {
+  const Point3& a = pic.points[t[0]];
+  const Point3& b = pic.points[t[1]];
+  const Point3& c = pic.points[t[2]];
+  return {a.x + b.x + c.x, a.y + b.y + c.y, a.z + b.z + c.z};
+}
 
-PartitionPicture sphere_picture(const ConvexModel& model, const AspectGraph3& graph, int subdivisions) {
+// The unit sphere: an octahedron subdivided `subdivisions` times (points and triangles only).
+PartitionPicture subdivided_sphere(int subdivisions) {
   PartitionPicture pic;
   pic.points = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
   pic.triangles = {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4}, {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
@@ -74,19 +83,14 @@ PartitionPicture sphere_picture(const ConvexModel& model, const AspectGraph3& gr
     }
     pic.triangles = std::move(next);
   }
-  const auto P = planes_d(model);
-  const RegionLookup lookup(model, graph);
-  for (const auto& t : pic.triangles) {
-    const Point3& a = pic.points[t[0]];
-    const Point3& b = pic.points[t[1]];
-    const Point3& c = pic.points[t[2]];
-    const Point3 d{a.x + b.x + c.x, a.y + b.y + c.y, a.z + b.z + c.z};
-    pic.triangle_region.push_back(lookup([&](std::size_t k) { return P[k].n[0] * d.x + P[k].n[1] * d.y + P[k].n[2] * d.z; }));
-  }
-  // Great circles, one per normal up to sign, slightly outside the sphere so they show on top.
+  return pic;
+}
+
+// Great circles of the normals (one per normal up to sign), slightly outside the sphere so they show on top.
+void add_great_circles(PartitionPicture& pic, const std::vector<Point3>& normals) {
   std::vector<Point3> drawn;
-  for (std::size_t k = 0; k < P.size(); ++k) {
-    const Point3 n = unit({P[k].n[0], P[k].n[1], P[k].n[2]});
+  for (std::size_t k = 0; k < normals.size(); ++k) {
+    const Point3 n = unit(normals[k]);
     bool again = false;
     for (const Point3& m : drawn) again |= std::abs(std::abs(m.x * n.x + m.y * n.y + m.z * n.z) - 1) < 1e-12;
     if (again) continue;
@@ -103,6 +107,45 @@ PartitionPicture sphere_picture(const ConvexModel& model, const AspectGraph3& gr
     pic.curves.push_back(std::move(curve));
     pic.curve_plane.push_back(static_cast<std::int64_t>(k));
   }
+}
+
+}  // namespace
+
+PartitionPicture sphere_picture(const ConvexModel& model, const AspectGraph3& graph, int subdivisions) {
+  PartitionPicture pic = subdivided_sphere(subdivisions);
+  const auto P = planes_d(model);
+  const RegionLookup lookup(model, graph);
+  for (const auto& t : pic.triangles) {
+    const Point3 d = corner_sum(pic, t);
+    pic.triangle_region.push_back(lookup([&](std::size_t k) { return P[k].n[0] * d.x + P[k].n[1] * d.y + P[k].n[2] * d.z; }));
+  }
+  std::vector<Point3> normals;
+  for (const auto& p : P) normals.push_back({p.n[0], p.n[1], p.n[2]});
+  add_great_circles(pic, normals);
+  return pic;
+}
+
+PartitionPicture sphere_picture_of_cells(const AspectGraph3& graph, int subdivisions) {
+  PartitionPicture pic = subdivided_sphere(subdivisions);
+  std::unordered_map<std::string, int> region_of;
+  for (const auto& c : graph.sampled_cells) region_of.emplace(c.signs, c.region);
+  std::vector<Point3> normals;
+  for (const auto& n : graph.circles) normals.push_back({CGAL::to_double(n.x), CGAL::to_double(n.y), CGAL::to_double(n.z)});
+  std::string signs(graph.circles.size(), '0');
+  for (const auto& t : pic.triangles) {
+    const Point3 d = corner_sum(pic, t);
+    for (std::size_t k = 0; k < normals.size(); ++k) {
+      // Doubles decide when clearly away from the circle; else exactly (the double centroid as rationals).
+      const double f = normals[k].x * d.x + normals[k].y * d.y + normals[k].z * d.z;
+      const double bound = 1e-12 * (std::abs(normals[k].x) + std::abs(normals[k].y) + std::abs(normals[k].z)) * 4;
+      int sg = f > bound ? 1 : (f < -bound ? -1 : 0);
+      if (sg == 0) sg = CGAL::sign(graph.circles[k].x * Exact(d.x) + graph.circles[k].y * Exact(d.y) + graph.circles[k].z * Exact(d.z));
+      signs[k] = sg > 0 ? '+' : (sg < 0 ? '-' : '0');
+    }
+    const auto it = region_of.find(signs);
+    pic.triangle_region.push_back(it == region_of.end() ? -1 : it->second);
+  }
+  add_great_circles(pic, normals);
   return pic;
 }
 
@@ -120,10 +163,8 @@ PartitionPicture plane_picture(const ConvexModel& model, const AspectGraph3& gra
   const auto P = planes_d(model);
   const RegionLookup lookup(model, graph);
   for (const auto& t : pic.triangles) {
-    const Point3& a = pic.points[t[0]];
-    const Point3& b = pic.points[t[1]];
-    const Point3& c = pic.points[t[2]];
-    const Point3 p{(a.x + b.x + c.x) / 3, (a.y + b.y + c.y) / 3, h};
+    const Point3 m = corner_sum(pic, t);
+    const Point3 p{m.x / 3, m.y / 3, h};
     pic.triangle_region.push_back(
         lookup([&](std::size_t k) { return P[k].n[0] * p.x + P[k].n[1] * p.y + P[k].n[2] * p.z - P[k].c; }));
   }

@@ -26,6 +26,12 @@ struct PartitionPicture {
 // orthographic.
 PartitionPicture sphere_picture(const ConvexModel& model, const AspectGraph3& graph, int subdivisions);
 
+// Orthographic graphs of non-convex models (aspect/orthographic_aspect_graph: graph.circles and the cells'
+// sign vectors): the same sphere, each triangle labelled with the region of the partition cell holding its
+// centroid (the centroid's sign vector against the circles, exact signs of its double coordinates), and the
+// circles drawn. Cost: triangles x circles signs.
+PartitionPicture sphere_picture_of_cells(const AspectGraph3& graph, int subdivisions);
+
 // The square [x0, x1] x [y0, y1] of the plane z = h (cells x cells squares, two triangles each), graph
 // computed on that plane.
 PartitionPicture plane_picture(const ConvexModel& model, const AspectGraph3& graph, double h, double x0, double y0,

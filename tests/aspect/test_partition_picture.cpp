@@ -4,6 +4,7 @@
 #include "aspect/partition_picture.hpp"
 
 #include "aspect/convex_aspect_graph.hpp"
+#include "aspect/orthographic_aspect_graph.hpp"
 #include "tests/aspect/aspect_test_models.hpp"
 
 #include <gtest/gtest.h>
@@ -43,6 +44,27 @@ TEST(PartitionPicture, PlaneThroughTheCube) {
   EXPECT_TRUE(seen.count(-1));               // the section of the cube
   EXPECT_EQ(seen.size(), g.regions.size() + 1);  // and the 8 regions around it
   EXPECT_EQ(p.curves.size(), 4u);            // x = +-1, y = +-1
+}
+
+// Non-convex (L-prism): every sphere triangle gets a region, and at every 97th triangle's centroid the
+// independent slab oracle sees the region's aspect.
+TEST(PartitionPicture, SphereOfTheLPrismByCells) {
+  const Scene s = l_prism();
+  const AspectGraph3 g = orthographic_aspect_graph(s, closed_solid_fronts(s));
+  const PartitionPicture pic = sphere_picture_of_cells(g, 3);
+  ASSERT_EQ(pic.triangle_region.size(), pic.triangles.size());
+  const auto model = oracle_model(s);
+  for (std::size_t i = 0; i < pic.triangles.size(); ++i) {
+    ASSERT_GE(pic.triangle_region[i], 0);
+    if (i % 97) continue;
+    const auto& t = pic.triangles[i];
+    const Point3 &a = pic.points[t[0]], &b = pic.points[t[1]], &c = pic.points[t[2]];
+    std::vector<std::int64_t> ids;
+    for (int k : oracle::direction_aspect(model, oracle::qvec(a.x + b.x + c.x, a.y + b.y + c.y, a.z + b.z + c.z)))
+      ids.push_back(s.triangles[k].id);
+    EXPECT_EQ(ids, g.regions[pic.triangle_region[i]].aspect) << i;
+  }
+  EXPECT_EQ(pic.curves.size(), g.circles.size());
 }
 
 }  // namespace
