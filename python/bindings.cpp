@@ -188,14 +188,10 @@ struct BarsToPython : ProgressObserver {
 };
 std::mutex observed_call_mutex;
 
-// events: the JSON text of `exactvis events --json`.
-std::string run_events(Scene scene, const std::string& kinds, std::optional<std::string> light, bool split,
-                       py::object progress) {
-  api::EventsRequest request;
-  std::tie(request.ev, request.eee) = api::parse_event_kinds(kinds);
-  if (light) request.light = app::parse_light(scene, *light);
-  request.split_at_end_objects = split;
-  PythonProgress report(progress);
+// Runs job() (returning the JSON text) without the GIL; with an active callback, the progress bars of the
+// call are forwarded to it (one observed call at a time per process). Raises the callback's exception.
+template <class Job>
+std::string observed_call(PythonProgress& report, Job&& job) {
   BarsToPython observer(report);
   std::string text;
   {
@@ -206,7 +202,7 @@ std::string run_events(Scene scene, const std::string& kinds, std::optional<std:
       set_progress_observer(&observer);
     }
     try {
-      text = api::events_json(scene, api::events(scene, request)).dump();
+      text = job();
     } catch (...) {
       if (report.active()) set_progress_observer(nullptr);
       throw;
@@ -215,6 +211,17 @@ std::string run_events(Scene scene, const std::string& kinds, std::optional<std:
   }
   report.rethrow();
   return text;
+}
+
+// events: the JSON text of `exactvis events --json`.
+std::string run_events(Scene scene, const std::string& kinds, std::optional<std::string> light, bool split,
+                       py::object progress) {
+  api::EventsRequest request;
+  std::tie(request.ev, request.eee) = api::parse_event_kinds(kinds);
+  if (light) request.light = app::parse_light(scene, *light);
+  request.split_at_end_objects = split;
+  PythonProgress report(progress);
+  return observed_call(report, [&] { return api::events_json(scene, api::events(scene, request)).dump(); });
 }
 
 // pvs: the JSON text of `exactvis pvs --json`. The cells: `cells_json` (the text of a cells file, named
@@ -271,25 +278,7 @@ std::string run_skeleton(const Scene& scene, std::optional<std::string> pair, py
   api::SkeletonRequest request;
   if (pair) request.pair = api::parse_skeleton_pair(scene, *pair);
   PythonProgress report(progress);
-  BarsToPython observer(report);
-  std::string text;
-  {
-    py::gil_scoped_release release;
-    std::unique_lock<std::mutex> lock(observed_call_mutex, std::defer_lock);
-    if (report.active()) {
-      lock.lock();
-      set_progress_observer(&observer);
-    }
-    try {
-      text = api::skeleton_json(scene, api::skeleton(scene, request)).dump();
-    } catch (...) {
-      if (report.active()) set_progress_observer(nullptr);
-      throw;
-    }
-    if (report.active()) set_progress_observer(nullptr);
-  }
-  report.rethrow();
-  return text;
+  return observed_call(report, [&] { return api::skeleton_json(scene, api::skeleton(scene, request)).dump(); });
 }
 
 // shadows: the JSON text of `exactvis shadows --json`; `lights` as repeated --light SPEC, `receivers` as
@@ -307,25 +296,8 @@ std::string run_shadows(Scene scene, const std::string& scene_name, const std::v
     throw std::invalid_argument(scene_name + ": no receiver triangles (every triangle is part of the light)");
   options.vertex_irradiance = false;  // only the mesh files need it
   PythonProgress report(progress);
-  BarsToPython observer(report);
-  std::string text;
-  {
-    py::gil_scoped_release release;
-    std::unique_lock<std::mutex> lock(observed_call_mutex, std::defer_lock);
-    if (report.active()) {
-      lock.lock();
-      set_progress_observer(&observer);
-    }
-    try {
-      text = api::shadows_json(scene, api::shadows(scene, options), options.light).dump();
-    } catch (...) {
-      if (report.active()) set_progress_observer(nullptr);
-      throw;
-    }
-    if (report.active()) set_progress_observer(nullptr);
-  }
-  report.rethrow();
-  return text;
+  return observed_call(report,
+                       [&] { return api::shadows_json(scene, api::shadows(scene, options), options.light).dump(); });
 }
 
 // The 2D complex's progress: a plain function pointer, so one Python callback at a time per process.
