@@ -1,6 +1,6 @@
 #pragma once
 // The conservative PVS of one view cell (method `conservative` of `exactvis pvs`, issue #12): a fast
-// baseline that can only overestimate (docs/theory.md §5.9).
+// baseline that can only overestimate (docs/theory.md §5.10).
 //
 // A triangle is left out only with a proof that it is hidden; every other triangle is listed (without a
 // witness: "listed" means "not proved hidden", not "visible"). So the conservative PVS contains the exact
@@ -12,7 +12,7 @@
 //   own pieces. The scene's triangle hierarchy (region/triangle_bvh.hpp) is traversed from the root: a
 //   node box proved hidden by one wall hides its whole subtree.
 // - Other scenes (fallback): the same wall proofs for the scene's vertical rectangles, when it has any
-//   (e.g. tree trunks); no other occluders yet (see docs/theory.md §5.9).
+//   (e.g. tree trunks); no other occluders yet (see docs/theory.md §5.10).
 // Floats only choose which wall to try (a double version of the test); each proof is exact.
 #include "region/cell_pvs.hpp"
 
