@@ -1,6 +1,7 @@
 // `exactvis pvs SCENE... (--grid NX,NY,NZ [--box X0,Y0,Z0,X1,Y1,Z1] | --cells cells.json) [--json] [-o FILE]
 //  [--jsonl] [--resume] [--no-witnesses] [--vtp DIR] [--method exact|sampled|conservative] [--shard K/N] [--threads N] [-q]`:
 // the exact potentially visible set of every view cell, with a witness per visible triangle (docs/cli.md).
+#include "api/pvs.hpp"
 #include "apps/cli_util.hpp"
 #include "apps/command_registry.hpp"
 #include "apps/pvs_run.hpp"
@@ -10,7 +11,6 @@
 #include "io/view_cells_json.hpp"
 #include "io/write_visibility_vtp.hpp"
 #include "region/pvs_method.hpp"
-#include "region/view_cell_grid.hpp"
 #include "util/cells_progress.hpp"
 
 #include <filesystem>
@@ -31,22 +31,6 @@ struct PvsCliOptions {
   int samples = 48, threads = 0;
   std::int64_t rays = -1;  // -1: the method's default (exact: 8 per triangle; sampled: 100000 per cell)
 };
-
-std::array<long, 3> parse_grid(const std::string& text) {
-  const auto parts = split(text, ',');
-  const std::string msg = "--grid: need 3 whole numbers NX,NY,NZ, each 1 .. 100000";
-  if (parts.size() != 3) throw std::invalid_argument(msg);
-  std::array<long, 3> n{};
-  for (int k = 0; k < 3; ++k) {
-    const std::string t = trim(parts[k]);
-    if (t.empty() || t.size() > 6 || t.find_first_not_of("0123456789") != std::string::npos)
-      throw std::invalid_argument(msg + " ('" + t + "')");
-    n[k] = std::stol(t);
-    if (n[k] < 1 || n[k] > 100000) throw std::invalid_argument(msg + " ('" + t + "')");
-  }
-  if (n[0] * n[1] * n[2] > 100'000'000) throw std::invalid_argument("--grid: more than 10^8 cells");
-  return n;
-}
 
 app::Shard parse_shard(const std::string& text) {
   const std::string msg = "--shard: need K/N with whole numbers 0 <= K < N";
@@ -103,7 +87,7 @@ int run_pvs(const PvsCliOptions& o) {
   if (o.resume && (!lines || o.output.empty()))
     throw std::invalid_argument("--resume: needs the JSON-lines output -o FILE.jsonl (or --jsonl -o FILE)");
   if (o.json && o.jsonl) throw std::invalid_argument("--json and --jsonl: choose one output form");
-  const std::array<long, 3> grid = o.grid.empty() ? std::array<long, 3>{} : parse_grid(o.grid);
+  const std::array<long, 3> grid = o.grid.empty() ? std::array<long, 3>{} : app::parse_grid(o.grid);
   std::optional<region::RationalBox3> box;
   if (!o.box.empty()) box = app::parse_box(o.box, "--box");
 
@@ -115,15 +99,7 @@ int run_pvs(const PvsCliOptions& o) {
   if (!o.cells.empty()) {
     cells = read_view_cells(o.cells);
   } else {
-    if (!box) {
-      if (scene.triangles.empty()) throw std::invalid_argument("--grid: the scene is empty; give --box");
-      box = region::exact_box(bounding_box(scene));
-      for (int k = 0; k < 3; ++k)
-        if (!(box->lo[k] < box->hi[k]))
-          throw std::invalid_argument(std::string("--grid: the scene's bounding box is flat in ") + "xyz"[k] +
-                                      "; give --box");
-    }
-    cells = region::grid_cells(*box, grid);
+    cells = api::grid_view_cells(scene, grid, box);
   }
   const OrderedJson scene_label = o.scenes.size() == 1 ? OrderedJson(o.scenes[0]) : OrderedJson(o.scenes);
   const auto cell_count = static_cast<std::int64_t>(cells.size());

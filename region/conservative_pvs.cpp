@@ -112,8 +112,9 @@ CellPvs conservative_cell_pvs(const PvsContext& context, const RationalBox3& cel
   std::stable_sort(usable.begin(), usable.end(), [&](std::size_t a, std::size_t b) { return distance[a] < distance[b]; });
 
   // The closed convex solids strictly apart from the cell (single-occluder culling, region/convex_occluder),
-  // nearest first. A solid blocks a target box only if the box is strictly apart from it too, so that the
-  // segment meets the solid's surface at an interior point (never only at its end on the target).
+  // nearest first. solid_blocks_box_pair itself proves both boxes disjoint from the closed solid (so the
+  // segment meets the surface inside, never only at its end on the target); strictly_apart is a cheaper
+  // pre-test of the same kind that skips solids which cannot qualify before its 64 segment tests.
   const std::vector<ConvexSolid>& solids = context.solids();
   std::vector<std::size_t> usable_solids;
   for (std::size_t k = 0; k < solids.size(); ++k)

@@ -134,25 +134,27 @@ std::array<RationalPoint3, 8> box_corners(const RationalBox3& b) {
 }
 }  // namespace
 
-bool box_outside_solid_interior(const ConvexSolid& solid, const RationalBox3& box) {
+bool box_disjoint_from_solid(const ConvexSolid& solid, const RationalBox3& box) {
   const std::array<RationalPoint3, 8> corners = box_corners(box);
   for (const Plane3& f : solid.facets)
     if (std::all_of(corners.begin(), corners.end(),
-                    [&](const RationalPoint3& c) { return plane_side(f, c) != Sign::Negative; }))
+                    [&](const RationalPoint3& c) { return plane_side(f, c) == Sign::Positive; }))
       return true;
   // The solid's corners are doubles, the box's rationals: exact comparisons.
   for (int axis = 0; axis < 3; ++axis) {
     const bool below = std::all_of(solid.corners.begin(), solid.corners.end(),
-                                   [&](const Point3& p) { return Exact(p[axis]) <= box.lo[axis]; });
+                                   [&](const Point3& p) { return Exact(p[axis]) < box.lo[axis]; });
     const bool above = std::all_of(solid.corners.begin(), solid.corners.end(),
-                                   [&](const Point3& p) { return Exact(p[axis]) >= box.hi[axis]; });
+                                   [&](const Point3& p) { return Exact(p[axis]) > box.hi[axis]; });
     if (below || above) return true;
   }
   return false;
 }
 
 bool solid_blocks_box_pair(const ConvexSolid& solid, const RationalBox3& cell, const RationalBox3& box) {
-  if (!box_outside_solid_interior(solid, box) && !box_outside_solid_interior(solid, cell)) return false;
+  // Both boxes apart from P: a closed segment from C to B that meets P then meets it (entering from outside,
+  // at its surface) at a point of its open interior (a decal flush on a facet is not hidden by that solid).
+  if (!box_disjoint_from_solid(solid, cell) || !box_disjoint_from_solid(solid, box)) return false;
   const std::array<RationalPoint3, 8> from = box_corners(cell), to = box_corners(box);
   for (const RationalPoint3& a : from)
     for (const RationalPoint3& b : to)

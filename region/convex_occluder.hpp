@@ -1,6 +1,6 @@
 #pragma once
 // Closed convex solids of a scene and the single-occluder culling test: a proof, from eight corners each,
-// that every segment between two convex sets meets the solid's surface (docs/theory.md §5.9).
+// that every segment between two convex sets crosses the solid's surface (docs/theory.md §5.9).
 //
 // Used as a cheap first "hidden" test before the line-space CSG (PVS hierarchy) and as the single-occluder
 // culling of the conservative PVS fallback. Exact: every decision is a filtered exact predicate.
@@ -32,16 +32,16 @@ std::vector<ConvexSolid> convex_solids(const Scene& scene);
 // the facet half-spaces, compared without divisions). Cost: O(F^2) filtered signs for F facets.
 bool segment_meets_solid(const ConvexSolid& solid, const RationalPoint3& a, const RationalPoint3& b);
 
-// True iff the two closed boxes are proved to have no point of int(P) in common with the box: a facet
-// plane leaves all 8 corners on its closed outer side, or an axis separates the corners of P from the box.
-// (Sufficient, not necessary: false means "not proved".)
-bool box_outside_solid_interior(const ConvexSolid& solid, const RationalBox3& box);
+// True iff the closed box is proved disjoint from the closed solid P: a facet plane leaves all 8 corners
+// strictly on its outer side, or an axis strictly separates the corners of P from the box. (Sufficient, not
+// necessary: false means "not proved".)
+bool box_disjoint_from_solid(const ConvexSolid& solid, const RationalBox3& box);
 
-// Input: a solid, the closed cell C and a closed box B (e.g. a BVH node's box), both boxes of positive or
-// zero extent. Output: true proves that every closed segment from a point of C to a point of B meets a
-// closed triangle of the solid (so every triangle inside B that is not one of the solid's triangles is
-// hidden from C, docs/theory.md §5.9); false means not proved. Method: the 64 corner-to-corner segments meet
-// the closed solid (sufficient by convexity) and C or B is outside int(P). Cost: 64 segment tests.
+// Input: a solid, the closed cell C and a closed box B (e.g. a BVH node's box). Output: true proves that
+// every segment from a point of C to a point of B has an open interior that meets a closed triangle of the
+// solid, so every triangle inside B that is not one of the solid's triangles is hidden from C
+// (docs/theory.md §5.9); false means not proved. Method: C and B are proved disjoint from P, and the 64
+// corner-to-corner segments meet the closed solid (sufficient by convexity). Cost: 64 segment tests.
 bool solid_blocks_box_pair(const ConvexSolid& solid, const RationalBox3& cell, const RationalBox3& box);
 
 }  // namespace exactvis::region

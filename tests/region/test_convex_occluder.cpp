@@ -23,12 +23,14 @@ mpq_class q(const Exact& x) {
 oracle::QVec to_q(const RationalPoint3& p) { return {q(p.x), q(p.y), q(p.z)}; }
 oracle::QVec to_q(const Point3& p) { return oracle::qvec(p.x, p.y, p.z); }
 
-// Oracle: the closed segment meets a closed face triangle of the solid.
-bool oracle_meets_surface(const Scene& scene, const ConvexSolid& s, const oracle::QVec& a, const oracle::QVec& b) {
+// Oracle: the closed (or open) segment meets a closed face triangle of the solid.
+bool oracle_meets_surface(const Scene& scene, const ConvexSolid& s, const oracle::QVec& a, const oracle::QVec& b,
+                          bool open = false) {
   for (const std::int64_t ti : s.triangles) {
     const auto& t = scene.triangles[ti];
-    if (oracle::oracle_closed_segment_meets_closed_triangle(a, b, to_q(scene.corner(t, 0)), to_q(scene.corner(t, 1)),
-                                                            to_q(scene.corner(t, 2))))
+    const oracle::QVec t0 = to_q(scene.corner(t, 0)), t1 = to_q(scene.corner(t, 1)), t2 = to_q(scene.corner(t, 2));
+    if (open ? oracle::oracle_open_segment_meets_closed_triangle(a, b, t0, t1, t2)
+             : oracle::oracle_closed_segment_meets_closed_triangle(a, b, t0, t1, t2))
       return true;
   }
   return false;
@@ -149,14 +151,14 @@ TEST(ConvexSolids, BlockedBoxPairsSurviveRandomSegments) {
     ++blocked;
     for (int k = 0; k < 60; ++k) {
       const RationalPoint3 p = random_point_in(cell, rng), q = random_point_in(target, rng);
-      ASSERT_TRUE(oracle_meets_surface(b.scene, solids[0], to_q(p), to_q(q))) << "trial " << trial;
+      ASSERT_TRUE(oracle_meets_surface(b.scene, solids[0], to_q(p), to_q(q), /*open=*/true)) << "trial " << trial;
     }
   }
   EXPECT_GT(blocked, 30);
   EXPECT_GT(not_blocked, 30);
 }
 
-TEST(ConvexSolids, BoxesInsideTheSolidAreNotBlocked) {
+TEST(ConvexSolids, BoxesTouchingTheSolidAreNotBlocked) {
   // Every segment between two boxes inside a big solid meets the solid but not its surface.
   SceneBuilder b;
   b.box({0, 0, 0}, {10, 10, 10});
@@ -165,9 +167,23 @@ TEST(ConvexSolids, BoxesInsideTheSolidAreNotBlocked) {
   RationalBox3 cell{{1, 1, 1}, {2, 2, 2}}, target{{7, 7, 7}, {8, 8, 8}};
   EXPECT_TRUE(segment_meets_solid(solids[0], cell.lo, target.hi));
   EXPECT_FALSE(solid_blocks_box_pair(solids[0], cell, target));
-  // A cell outside, the target inside: every segment enters the solid through its surface.
+  // A cell outside, the target inside: segments to points inside cross the surface, but the target box
+  // (like a decal's) is not apart from the solid, so nothing is claimed.
   cell = {{-3, 4, 4}, {-2, 5, 5}};
-  EXPECT_TRUE(solid_blocks_box_pair(solids[0], cell, target));
+  EXPECT_FALSE(solid_blocks_box_pair(solids[0], cell, target));
+  // A decal flush on the far face x = 10 (seen from a cell beyond it, the segments meet the solid only at
+  // their end point on the decal): the target box touches the solid, so nothing is claimed.
+  const RationalBox3 decal{{10, 4, 4}, {10, 6, 6}};
+  EXPECT_FALSE(solid_blocks_box_pair(solids[0], {{12, 4, 4}, {13, 5, 5}}, decal));
+  EXPECT_FALSE(solid_blocks_box_pair(solids[0], cell, decal));
+  // A cell flush against the near face x = 0: the segments start on the surface.
+  const RationalBox3 flush{{-1, 4, 4}, {0, 5, 5}}, behind{{12, 4, 4}, {13, 5, 5}};
+  EXPECT_FALSE(solid_blocks_box_pair(solids[0], flush, behind));
+  // Apart on both sides: blocked.
+  EXPECT_TRUE(solid_blocks_box_pair(solids[0], cell, behind));
+  // Segments that only touch the solid at their end point are not blocked (the open-segment rule).
+  const RationalBox3 on_face{{10, 4, 4}, {11, 5, 5}};
+  EXPECT_FALSE(solid_blocks_box_pair(solids[0], cell, on_face));
 }
 
 }  // namespace
