@@ -207,7 +207,8 @@ int run_pvs(const PvsCliOptions& o) {
     const region::ExtrudedScene& ex = context.extruded();
     std::cerr << "pvs --method conservative: "
               << (ex.is_25d ? "the scene is 2.5D" : "the scene is not 2.5D (" + ex.reason + "): fallback") << ", "
-              << ex.walls.size() << " wall rectangles as occluders\n";
+              << ex.walls.size() << " wall rectangles and " << context.solids().size()
+              << " closed convex solids as occluders\n";
   }
   {
     CellsProgress bar("pvs", mine.size(), "triangles", writer && app::progress_wanted(o.quiet));

@@ -18,6 +18,11 @@ const ExtrudedScene& PvsContext::extruded() const {
   return lazy_->extruded;
 }
 
+const std::vector<ConvexSolid>& PvsContext::solids() const {
+  std::call_once(lazy_->solids_once, [&] { lazy_->solids = convex_solids(scene_); });
+  return lazy_->solids;
+}
+
 std::vector<std::string> visible_objects(const Scene& scene, const CellPvs& pvs) {
   std::vector<char> seen(scene.objects.size(), 0);
   for (const auto& v : pvs.visible) seen[scene.triangles[v.index].object] = 1;

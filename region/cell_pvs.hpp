@@ -9,6 +9,7 @@
 #include "kernel/float_ray_caster.hpp"
 #include "kernel/scene.hpp"
 #include "kernel/triangle_index.hpp"
+#include "region/convex_occluder.hpp"
 #include "region/convex_polygon_3.hpp"
 #include "region/extruded_scene.hpp"
 #include "region/triangle_bvh.hpp"
@@ -39,6 +40,8 @@ class PvsContext {
   // The 2.5D verdict and wall rectangles of method `conservative` (region/extruded_scene.hpp), computed on
   // first use (thread-safe; O(n log n)), so the other methods do not pay for it.
   const ExtrudedScene& extruded() const;
+  // The scene's closed convex solids (region/convex_occluder.hpp), computed on first use like extruded().
+  const std::vector<ConvexSolid>& solids() const;
 
  private:
   const Scene& scene_;
@@ -47,8 +50,9 @@ class PvsContext {
   TriangleBvh bvh_;
   double diagonal_ = 0;
   struct Lazy {
-    std::once_flag once;
+    std::once_flag once, solids_once;
     ExtrudedScene extruded;
+    std::vector<ConvexSolid> solids;
   };
   std::unique_ptr<Lazy> lazy_ = std::make_unique<Lazy>();
 };

@@ -1,6 +1,6 @@
 #pragma once
 // The conservative PVS of one view cell (method `conservative` of `exactvis pvs`, issue #12): a fast
-// baseline that can only overestimate (docs/theory.md §5.9).
+// baseline that can only overestimate (docs/theory.md §5.10).
 //
 // A triangle is left out only with a proof that it is hidden; every other triangle is listed (without a
 // witness: "listed" means "not proved hidden", not "visible"). So the conservative PVS contains the exact
@@ -12,7 +12,10 @@
 //   own pieces. The scene's triangle hierarchy (region/triangle_bvh.hpp) is traversed from the root: a
 //   node box proved hidden by one wall hides its whole subtree.
 // - Other scenes (fallback): the same wall proofs for the scene's vertical rectangles, when it has any
-//   (e.g. tree trunks); no other occluders yet (see docs/theory.md §5.9).
+//   (e.g. tree trunks), then single-occluder culling by the scene's closed convex solids
+//   (region/convex_occluder.hpp: tree crowns, closed boxes), used only when both the cell and the target
+//   box are strictly apart from the solid's box, so the blocking point is inside the segment. The solids are
+//   tried in 2.5D scenes too (after the walls); cells carry no view frustum, so there is no frustum culling.
 // Floats only choose which wall to try (a double version of the test); each proof is exact.
 #include "region/cell_pvs.hpp"
 
@@ -21,9 +24,10 @@ namespace exactvis::region {
 // Input: the context, a cell (lo < hi, else std::invalid_argument), options (threads, hierarchy). Output:
 // every triangle not proved hidden (sorted by index, no witnesses); stats.culled = triangles proved
 // hidden, stats.boxes_tested / boxes_culled = hierarchy nodes tested / proved hidden, stats.exact_queries =
-// exact wall tests run (each proposed by the double test), stats.visible = listed. Deterministic. Cost: per
-// tested node or triangle, one double test per wall on the cell's far side... in the worst case
-// O((nodes + n) * walls) double tests, plus one exact test per proposal.
+// exact wall and solid tests run (each proposed by a double test), stats.visible = listed. Deterministic
+// (answers and counters do not depend on the thread count). Cost: per tested node or triangle, one double
+// test per wall and per solid whose box the cell-to-target segment passes: O((nodes + n) * (walls +
+// solids)) double tests in the worst case, plus one exact test per proposal.
 CellPvs conservative_cell_pvs(const PvsContext& context, const RationalBox3& cell, const PvsOptions& options);
 
 }  // namespace exactvis::region

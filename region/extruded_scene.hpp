@@ -1,6 +1,6 @@
 #pragma once
 // 2.5D scenes (issue #12, method `conservative`, seed 001 Leyvand et al. 2003): the exact detection rule and
-// the wall rectangles the conservative method's proofs use (docs/theory.md §5.9).
+// the wall rectangles the conservative method's proofs use (docs/theory.md §5.10).
 //
 // Rule: a scene is 2.5D when every triangle is either horizontal (its three z coordinates are equal) or one
 // half of a vertical wall rectangle: two triangles whose xy projections lie on one segment [a, b] (exact

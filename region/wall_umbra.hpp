@@ -1,5 +1,5 @@
 #pragma once
-// The occlusion proof of method `conservative` in 2.5D (docs/theory.md §5.9): seed 001's factorization of
+// The occlusion proof of method `conservative` in 2.5D (docs/theory.md §5.10): seed 001's factorization of
 // from-region visibility into a horizontal component (2D footprints, seen from above) and a vertical one
 // (the umbra in each vertical "directional plane"), here for one wall rectangle and decided exactly.
 //

@@ -15,6 +15,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
 
 using namespace exactvis;
@@ -134,6 +135,52 @@ TEST(ConservativePvs, FallbackOnAForestIsStillASuperset) {
   const Box3 bb = bounding_box(forest);
   const double x = 0.5 * (bb.lo.x + bb.hi.x), y = 0.5 * (bb.lo.y + bb.hi.y);
   check_superset(forest, box(x, y, 0.1, x + 0.5, y + 0.5, 0.6));
+}
+
+TEST(ConservativePvs, AConvexSolidCullsWhatIsBehindIt) {
+  // An octahedron |x - 5| + |y| + |z - 1.5| <= 2 (not a wall: only the solid can prove anything).
+  pvs_test::SceneBuilder b;
+  b.object("octahedron");
+  const Point3 c{5, 0, 1.5};
+  for (int sx : {-1, 1})
+    for (int sy : {-1, 1})
+      for (int sz : {-1, 1}) {
+        Point3 A = c, B = c, C = c;
+        A.x += 2 * sx, B.y += 2 * sy, C.z += 2 * sz;
+        if (sx * sy * sz < 0) std::swap(B, C);
+        b.triangle(A, B, C);
+      }
+  b.object("behind");
+  b.rect(0, 8, -0.5, 0.5, 1.0, 1.5);  // triangles 8, 9: hidden by the octahedron
+  b.object("decal");  // flush on the face -x + y + z = -1.5 (dyadic points), facing the cell: visible
+  b.triangle({4, 0.5, 2}, {4.5, 1, 2}, {4.5, 0.5, 2.5});
+  const RationalBox3 cell = box(0, -0.5, 1, 1, 0.5, 2);
+  const PvsContext context(b.scene);
+  ASSERT_EQ(context.solids().size(), 1u);
+  EXPECT_EQ(context.extruded().walls.size(), 1u);  // the target square itself: it cannot hide itself
+  const CellPvs cons = conservative_cell_pvs(context, cell, {});
+  std::vector<char> listed(b.scene.triangles.size(), 0);
+  for (const auto& v : cons.visible) listed[static_cast<std::size_t>(v.index)] = 1;
+  EXPECT_FALSE(listed[8] || listed[9]) << "the solid should hide the square behind it";
+  EXPECT_TRUE(listed[10]) << "the decal is visible";
+  check_superset(b.scene, cell, 64);
+}
+
+TEST(ConservativePvs, ADecalFlushOnASolidsFaceIsListed) {
+  // A closed box (also wall rectangles) with a flat target on its face x = 4: every segment from the cell to
+  // it ends on the box's surface, touching it only at its end, so it is visible; neither the walls (not
+  // strictly beyond) nor the solid (its box not strictly apart) may cull it.
+  pvs_test::SceneBuilder b;
+  b.object("box");
+  b.box({4, -2, 0}, {6, 2, 3});
+  b.object("decal");
+  b.triangle({4, -0.5, 1}, {4, 0.5, 1}, {4, 0, 2});
+  const RationalBox3 cell = box(0, -0.5, 1, 1, 0.5, 2);
+  const PvsContext context(b.scene);
+  ASSERT_EQ(context.solids().size(), 1u);
+  const CellPvs cons = conservative_cell_pvs(context, cell, {});
+  EXPECT_TRUE(std::any_of(cons.visible.begin(), cons.visible.end(), [](const VisibleTriangle& v) { return v.index == 12; }));
+  check_superset(b.scene, cell, 64);
 }
 
 TEST(ConservativePvs, DispatchedAsAMethod) {

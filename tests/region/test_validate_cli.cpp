@@ -183,4 +183,12 @@ TEST_F(ValidateCli, ChecksThePvsFilesOfExactvisPvs) {
   EXPECT_EQ(js["totals"]["false_visible"], 0);
   EXPECT_EQ(js["totals"]["exact"], je["totals"]["exact"]);
   EXPECT_GT(js["totals"]["reported"], 0);
+  // The conservative PVS misses nothing: validate finds only false visible triangles in it.
+  ASSERT_EQ(run("pvs " + common + " --method conservative --json -o " + path("conservative.json")).status, 0);
+  const CliRun c = run("validate " + common + " --pvs " + path("conservative.json") + " --json");
+  ASSERT_EQ(c.status, 0) << c.err;
+  const auto jc = nlohmann::json::parse(c.out);
+  EXPECT_EQ(jc["totals"]["false_invisible"], 0);
+  EXPECT_EQ(jc["totals"]["exact"], je["totals"]["exact"]);
+  EXPECT_EQ(jc["totals"]["reported"].get<int>(), je["totals"]["exact"].get<int>() + jc["totals"]["false_visible"].get<int>());
 }

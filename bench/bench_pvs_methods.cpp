@@ -1,0 +1,122 @@
+// bench_pvs_methods: the three PVS methods of `exactvis pvs --method` side by side on generated towns and
+// forests, per cell (issue #12): time and PVS size of exact / sampled / conservative; sampled's false
+// invisible (exact - sampled: the sampler never lists a hidden triangle) at equal time to exact (its ray
+// count set from a short calibration run so that it takes about exact's time); conservative's overestimate
+// (listed / exact) and its misses (must be 0). Ratios are to exact, measured in the same run. Wall-clock and
+// process CPU seconds (the machine may be shared: CPU seconds are the fairer figure).
+//
+// Usage: bench_pvs_methods [--kinds town,forest] [--sizes 2000,10000] [--threads 2] [--exact-max N]
+//   --exact-max: run exact (and sampled at equal time) only up to N triangles (default 10000); above it, only
+//   conservative and sampled with --rays (default 10^6) are timed.
+#include "bench/bench_util.hpp"
+#include "kernel/scene_generators.hpp"
+#include "region/conservative_pvs.hpp"
+#include "region/exact_pvs.hpp"
+#include "region/sampled_pvs.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <ctime>
+#include <string>
+
+using namespace exactvis;
+
+namespace {
+
+struct Timing {
+  double wall = 0, cpu = 0;
+};
+
+template <class F>
+Timing timed(F&& f) {
+  const double w0 = bench::now();
+  const std::clock_t c0 = std::clock();
+  f();
+  return {bench::now() - w0, static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC};
+}
+
+std::vector<char> membership(std::size_t n, const region::CellPvs& pvs) {
+  std::vector<char> in(n, 0);
+  for (const auto& v : pvs.visible) in[static_cast<std::size_t>(v.index)] = 1;
+  return in;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::vector<std::string> kinds{"town", "forest"}, sizes{"2000", "10000"};
+  int threads = 2;
+  long exact_max = 10000;
+  std::int64_t rays = 1000000;
+  for (int i = 1; i + 1 < argc; i += 2) {
+    const std::string a = argv[i];
+    if (a == "--kinds") kinds = bench::split(argv[i + 1]);
+    else if (a == "--sizes") sizes = bench::split(argv[i + 1]);
+    else if (a == "--threads") threads = std::stoi(argv[i + 1]);
+    else if (a == "--exact-max") exact_max = std::stol(argv[i + 1]);
+    else if (a == "--rays") rays = std::stoll(argv[i + 1]);
+  }
+  std::printf("%-7s %8s %-13s %9s %9s %7s %9s %10s %9s\n", "scene", "tris", "method", "wall_s", "cpu_s", "pvs",
+              "vs_exact", "rays", "errors");
+  for (const auto& kind : kinds)
+    for (const auto& size : sizes) {
+      const Scene scene = generate_scene(kind, std::stol(size), 1);
+      const Box3 b = bounding_box(scene);
+      // A street-level cell near one corner (the cell of bench_pvs).
+      const region::RationalBox3 cell =
+          region::exact_box({{b.lo.x + 0.25, b.lo.y + 0.25, 1}, {b.lo.x + 1.5, b.lo.y + 1.5, 2}});
+      const region::PvsContext context(scene);
+      const std::size_t n = scene.triangles.size();
+      region::PvsOptions po;
+      po.threads = threads;
+      const bool with_exact = static_cast<long>(n) <= exact_max;
+      auto row = [&](const char* method, const Timing& tm, std::int64_t pvs, const std::string& vs, std::int64_t r,
+                     const std::string& errors) {
+        std::printf("%-7s %8zu %-13s %9.3f %9.3f %7lld %9s %10lld %9s\n", kind.c_str(), n, method, tm.wall, tm.cpu,
+                    static_cast<long long>(pvs), vs.c_str(), static_cast<long long>(r), errors.c_str());
+        std::fflush(stdout);
+      };
+      (void)context.extruded();  // detection and solids outside the timings (built once per scene)
+      (void)context.solids();
+      region::CellPvs exact, cons;
+      Timing t_exact;
+      if (with_exact) {
+        t_exact = timed([&] { exact = region::exact_cell_pvs(context, cell, po); });
+        row("exact", t_exact, exact.stats.visible, "1.00", 0, "-");
+      }
+      const Timing t_cons = timed([&] { cons = region::conservative_cell_pvs(context, cell, po); });
+      std::string vs = "-", errors = "-";
+      if (with_exact) {
+        const auto in = membership(n, cons);
+        std::int64_t misses = 0;
+        for (const auto& v : exact.visible) misses += in[static_cast<std::size_t>(v.index)] ? 0 : 1;
+        char buf[32];
+        std::snprintf(buf, sizeof buf, "%.2fx", static_cast<double>(cons.stats.visible) / static_cast<double>(std::max<std::int64_t>(1, exact.stats.visible)));
+        vs = buf;
+        errors = std::to_string(misses) + " miss";
+      }
+      row("conservative", t_cons, cons.stats.visible, vs, 0, errors);
+      // Sampled: calibrate the ray rate, then (with exact) as many rays as exact's time allows.
+      region::PvsOptions so = po;
+      so.cell_rays = 100000;
+      region::CellPvs sampled;
+      const Timing t_cal = timed([&] { sampled = region::sampled_cell_pvs(context, cell, so); });
+      std::int64_t r = rays;
+      if (with_exact) r = std::clamp<std::int64_t>(static_cast<std::int64_t>(100000 * t_exact.wall / std::max(1e-3, t_cal.wall)), 100000, 200000000);
+      so.cell_rays = r;
+      const Timing t_s = timed([&] { sampled = region::sampled_cell_pvs(context, cell, so); });
+      vs = "-", errors = "-";
+      if (with_exact) {
+        char buf[32];
+        std::snprintf(buf, sizeof buf, "%.2fx", static_cast<double>(sampled.stats.visible) / static_cast<double>(std::max<std::int64_t>(1, exact.stats.visible)));
+        vs = buf;
+        const auto in = membership(n, exact);
+        std::int64_t wrong = 0;
+        for (const auto& v : sampled.visible) wrong += in[static_cast<std::size_t>(v.index)] ? 0 : 1;
+        errors = std::to_string(exact.stats.visible - sampled.stats.visible + wrong) + " f.inv";
+        if (wrong > 0) errors += " " + std::to_string(wrong) + " f.vis!";
+      }
+      row("sampled", t_s, sampled.stats.visible, vs, r, errors);
+    }
+  return 0;
+}
