@@ -46,7 +46,7 @@ ordered_json curve_json(const exactvis::Scene& scene, const exactvis::shadows::D
   } else if (c.kind == Kind::EV) {
     g["vertex"] = c.vertex;
     g["edge"] = {c.edge[0], c.edge[1]};
-    g["light"] = c.light_vertex ? "vertex" : "edge";
+    g["light"] = c.blocker_blocker ? "none" : c.light_vertex ? "vertex" : "edge";
   } else {
     g["edges"] = ordered_json::array();
     for (const auto& e : c.edges) g["edges"].push_back({e[0], e[1]});
@@ -169,7 +169,9 @@ int run_shadows(const ShadowsCliOptions& o) {
       fj["light_fraction"] = f.fraction_value;
       fj["irradiance"] = f.irradiance;
       fj["light_fraction_exact"] = f.fraction_exact ? exact_json(f.fraction) : ordered_json(nullptr);
-      fj["area_uv"] = exact_json(f.area_uv);
+      fj["area_uv"] = f.area_exact ? exact_json(f.area_uv) : ordered_json(f.area_uv_value);
+      fj["area_exact"] = f.area_exact;
+      fj["conic_bounded"] = f.conic_bounded;
       fj["blockers"] = f.blockers;
       fj["backprojection"] = visible_json(scene, f.visible);
       rj["faces"].push_back(fj);
@@ -187,7 +189,11 @@ int run_shadows(const ShadowsCliOptions& o) {
     j["light"] = {{"triangles", lt}};
     j["stats"] = {{"ev_events", res.stats.ev_events},
                   {"eee_events", res.stats.eee_events},
+                  {"blocker_ev_events", res.stats.blocker_ev_events},
                   {"backprojections", res.stats.backprojections},
+                  {"conic_arcs", res.stats.conic_arcs},
+                  {"chord_curves", res.stats.chord_curves},
+                  {"arrangement_failures", res.stats.arrangement_failures},
                   {"seconds_ev", res.stats.seconds_ev},
                   {"seconds_eee", res.stats.seconds_eee},
                   {"seconds_events", res.stats.seconds_events},
