@@ -194,8 +194,11 @@ int run_shadows(const ShadowsCliOptions& o) {
                   {"conic_arcs", res.stats.conic_arcs},
                   {"chord_curves", res.stats.chord_curves},
                   {"arrangement_failures", res.stats.arrangement_failures},
+                  {"trimmed_arcs", res.stats.trimmed_arcs},
+                  {"uncertified_samples", res.stats.uncertified_samples},
                   {"seconds_ev", res.stats.seconds_ev},
                   {"seconds_eee", res.stats.seconds_eee},
+                  {"seconds_blocker_ev", res.stats.seconds_blocker_ev},
                   {"seconds_events", res.stats.seconds_events},
                   {"seconds_receivers", res.stats.seconds_receivers}};
     std::cout << j.dump(2) << "\n";

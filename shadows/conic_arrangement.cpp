@@ -162,14 +162,63 @@ double halfedge_area(const Arrangement::Halfedge_const_handle& h, int n) {
 
 namespace {
 
-ReceiverArrangement build(const std::vector<ArrangementCurve>& curves, const std::vector<std::array<Exact, 2>>& queries) {
+using Lens = std::array<std::array<Exact, 2>, 3>;
+
+// The triangle (a, b, c), c where the conic's tangents at a and b meet: it holds the conic's arc from a to b
+// when that arc turns by less than a half turn, which holds iff c lies on the side of the chord the arc
+// bulges to (right of a -> b for a left-turning arc). Exact; none when that fails.
+std::optional<Lens> lens_triangle(const std::array<Exact, 6>& q, const std::array<Exact, 2>& a,
+                                  const std::array<Exact, 2>& b, int turn) {
+  auto grad = [&](const std::array<Exact, 2>& p) {
+    return std::array<Exact, 2>{2 * q[0] * p[0] + q[1] * p[1] + q[3], q[1] * p[0] + 2 * q[2] * p[1] + q[4]};
+  };
+  const auto ga = grad(a), gb = grad(b);
+  // ga . X = ga . a, gb . X = gb . b
+  const Exact det = ga[0] * gb[1] - ga[1] * gb[0];
+  if (det == 0) return std::nullopt;
+  const Exact ra = ga[0] * a[0] + ga[1] * a[1], rb = gb[0] * b[0] + gb[1] * b[1];
+  const std::array<Exact, 2> c{(ra * gb[1] - ga[1] * rb) / det, (ga[0] * rb - ra * gb[0]) / det};
+  if (orient(a, b, c) != -turn) return std::nullopt;
+  return Lens{a, b, c};
+}
+
+bool in_closed_triangle(const std::array<Exact, 2>& p, const Lens& t) {
+  const int o0 = orient(t[0], t[1], p), o1 = orient(t[1], t[2], p), o2 = orient(t[2], t[0], p);
+  return (o0 >= 0 && o1 >= 0 && o2 >= 0) || (o0 <= 0 && o1 <= 0 && o2 <= 0);
+}
+
+ReceiverArrangement build(const std::vector<ArrangementCurve>& curves, const std::vector<std::array<Exact, 2>>& queries,
+                          bool trim) {
   ReceiverArrangement out;
+  std::vector<Lens> lenses;
   std::vector<Curve> input;
   const std::array<std::array<Exact, 2>, 3> corner{{{Exact(0), Exact(0)}, {Exact(1), Exact(0)}, {Exact(0), Exact(1)}}};
   for (int k = 0; k < 3; ++k)
     input.emplace_back(RatKernel::Segment_2(rat_point(corner[k]), rat_point(corner[(k + 1) % 3])));
   for (const auto& c : curves) {
-    if (c.conic) {
+    if (c.conic && trim) {
+      // The arc without its first and last pieces, which enter as chords with their lens triangles.
+      const std::size_t n = c.points.size();
+      if (n >= 4) {
+        ArrangementCurve inner;
+        inner.points.assign(c.points.begin() + 1, c.points.end() - 1);
+        inner.conic = c.conic;
+        if (auto arc = conic_arc(inner)) {
+          const int turn = orient(inner.points.front(), inner.points[inner.points.size() / 2], inner.points.back());
+          input.push_back(std::move(*arc));
+          ++out.conic_arcs;
+          ++out.trimmed_arcs;
+          for (const auto& [a, b] : {std::pair{c.points[0], c.points[1]}, std::pair{c.points[n - 2], c.points[n - 1]}}) {
+            if (a == b) continue;
+            input.emplace_back(RatKernel::Segment_2(rat_point(a), rat_point(b)));
+            if (auto l = lens_triangle(*c.conic, a, b, turn)) lenses.push_back(*l);
+            else ++out.uncertified_lenses;
+          }
+          continue;
+        }
+      }
+      ++out.chord_curves;
+    } else if (c.conic) {
       if (auto arc = conic_arc(c)) {
         input.push_back(std::move(*arc));
         ++out.conic_arcs;
@@ -218,7 +267,7 @@ ReceiverArrangement build(const std::vector<ArrangementCurve>& curves, const std
     for (auto ic = f->inner_ccbs_begin(); ic != f->inner_ccbs_end(); ++ic) add_ccb(*ic);
     face.area_uv = face.conic_bounded ? a2 + (a2 - a1) / 3 : a2;
     // Sample: on an outer-boundary edge, probe vertically towards the face.
-    bool found = false;
+    bool found = false, certified = false;
     auto c0 = f->outer_ccb();
     auto c = c0;
     do {
@@ -244,11 +293,18 @@ ReceiverArrangement build(const std::vector<ArrangementCurve>& curves, const std
       }
       if (!ybound) continue;  // cannot happen for a bounded face; try another edge
       const Rational y0 = above ? rational_between(yc, *ybound) : rational_between(*ybound, yc);
-      face.sample = {from_rational(x0), from_rational(y0)};
+      const std::array<Exact, 2> cand{from_rational(x0), from_rational(y0)};
+      if (!found) face.sample = cand;
       found = true;
-      break;
+      // Outside every chord's lens triangle the sample is on the same side of the true arc as of the chord.
+      if (std::none_of(lenses.begin(), lenses.end(), [&](const Lens& l) { return in_closed_triangle(cand, l); })) {
+        face.sample = cand;
+        certified = true;
+        break;
+      }
     } while (++c != c0);
     if (!found) throw std::logic_error("receiver_arrangement: no sample found for a bounded face");
+    if (!certified) ++out.uncertified_samples;
     // A bounded face outside the unit triangle (an arc leaving it between its points) is not reported.
     const auto& q = face.sample;
     if (!(q[0] > 0 && q[1] > 0 && q[0] + q[1] < 1)) continue;
@@ -280,12 +336,18 @@ ReceiverArrangement build(const std::vector<ArrangementCurve>& curves, const std
 
 ReceiverArrangement receiver_arrangement(const std::vector<ArrangementCurve>& curves,
                                          const std::vector<std::array<Exact, 2>>& queries) {
+  std::string first;
   try {
-    return build(curves, queries);
+    return build(curves, queries, false);
+  } catch (const CGAL::Failure_exception& e) {
+    first = e.what();
+  }
+  try {
+    return build(curves, queries, true);
   } catch (const CGAL::Failure_exception& e) {
     ReceiverArrangement out;
     out.failed = true;
-    out.failure = e.what();
+    out.failure = first;
     return out;
   }
 }

@@ -50,8 +50,15 @@ struct ReceiverArrangement {
   std::size_t conic_arcs = 0;       // curves inserted as conic arcs
   std::size_t chord_curves = 0;     // curves with a conic inserted as polylines (degenerate or check failed)
   // CGAL 5.5's Arr_conic_traits_2 violates its own preconditions on some valid inputs (an inconsistent sweep
-  // order: Multiset.h "comp_f(object, nodeP->object) != LARGER"); then nothing else is filled, `failed` is
-  // set and `failure` holds CGAL's message (callers fall back, see shadow_mesh).
+  // order: Multiset.h "comp_f(object, nodeP->object) != LARGER"), seen where an arc and a segment, or two
+  // arcs, touch tangentially (an EEE arc starting where an EV segment ends). Then the arrangement is rebuilt
+  // with each arc's first and last pieces (between its first two and last two points) as chords
+  // (`trimmed_arcs`); a face sample is then taken outside every such chord's lens triangle (the triangle of
+  // the chord and the conic's tangents at its ends, which holds the arc piece: exact), so it is on the
+  // same side of every true arc as of its chord; `uncertified_samples` counts faces where no edge gave such
+  // a sample, `uncertified_lenses` chords whose lens could not be certified. If that fails too, nothing
+  // else is filled, `failed` is set and `failure` holds CGAL's message (callers fall back, see shadow_mesh).
+  std::size_t trimmed_arcs = 0, uncertified_samples = 0, uncertified_lenses = 0;
   bool failed = false;
   std::string failure;
 };

@@ -41,7 +41,9 @@ ShadowResult compute_shadows(const Scene& scene, const ShadowOptions& options) {
     BlockerEvOptions bo;
     bo.parallel = options.parallel;
     bo.progress = options.progress;
+    const auto before_bb = std::chrono::steady_clock::now();
     EvResult bb = blocker_ev_events(scene, options.light, bo);
+    res.stats.seconds_blocker_ev = std::chrono::duration<double>(std::chrono::steady_clock::now() - before_bb).count();
     res.stats.blocker_ev_events = bb.events.size();
     for (auto& e : bb.events) ev.events.push_back(std::move(e));
   }
@@ -56,7 +58,8 @@ ShadowResult compute_shadows(const Scene& scene, const ShadowOptions& options) {
   res.stats.seconds_events = std::chrono::duration<double>(mid - start).count();
 
   res.receivers.resize(receivers.size());
-  std::atomic<std::uint64_t> backprojections{0}, conic_arcs{0}, chord_curves{0}, arrangement_failures{0};
+  std::atomic<std::uint64_t> backprojections{0}, conic_arcs{0}, chord_curves{0}, arrangement_failures{0}, trimmed_arcs{0},
+      uncertified_samples{0};
   ProgressBar bar("shadows: receivers", receivers.size(), options.progress);
   for_each_index(receivers.size(), options.parallel, 1, [&](std::size_t i) {
     ReceiverShadows& out = res.receivers[i];
@@ -99,6 +102,8 @@ ShadowResult compute_shadows(const Scene& scene, const ShadowOptions& options) {
     out.conic_arcs = arr.conic_arcs;
     out.chord_curves = arr.chord_curves;
     conic_arcs += arr.conic_arcs;
+    trimmed_arcs += arr.trimmed_arcs;
+    uncertified_samples += arr.uncertified_samples + arr.uncertified_lenses;
     chord_curves += arr.chord_curves;
     // Without conic arcs the triangulation's constraints are the arrangement's curves: its faces are the
     // arrangement's, one to one, and give the exact areas.
@@ -151,6 +156,8 @@ ShadowResult compute_shadows(const Scene& scene, const ShadowOptions& options) {
   res.stats.conic_arcs = conic_arcs.load();
   res.stats.chord_curves = chord_curves.load();
   res.stats.arrangement_failures = arrangement_failures.load();
+  res.stats.trimmed_arcs = trimmed_arcs.load();
+  res.stats.uncertified_samples = uncertified_samples.load();
   res.stats.seconds_receivers =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - mid).count();
   return res;

@@ -66,8 +66,12 @@ struct ShadowStats {
   std::uint64_t backprojections = 0;
   std::uint64_t conic_arcs = 0, chord_curves = 0;    // over all receivers
   std::uint64_t arrangement_failures = 0;            // receivers whose conic arrangement failed
+  // Arcs whose end pieces entered as chords after a first CGAL failure, and faces (plus lenses) without a
+  // certified sample (conic_arrangement.hpp).
+  std::uint64_t trimmed_arcs = 0, uncertified_samples = 0;
   double seconds_events = 0, seconds_receivers = 0;  // events: EV (light and blocker-blocker) + EEE + curves
-  double seconds_ev = 0, seconds_eee = 0;
+  double seconds_ev = 0, seconds_eee = 0;  // seconds_ev includes seconds_blocker_ev
+  double seconds_blocker_ev = 0;
 };
 
 struct ShadowResult {
