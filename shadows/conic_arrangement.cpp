@@ -6,6 +6,7 @@
 
 #include <CGAL/Arr_conic_traits_2.h>
 #include <CGAL/Arr_extended_dcel.h>
+#include <CGAL/Arr_naive_point_location.h>
 #include <CGAL/Arr_walk_along_line_point_location.h>
 #include <CGAL/Arrangement_2.h>
 #include <CGAL/CORE_algebraic_number_traits.h>
@@ -188,7 +189,7 @@ bool in_closed_triangle(const std::array<Exact, 2>& p, const Lens& t) {
 }
 
 ReceiverArrangement build(const std::vector<ArrangementCurve>& curves, const std::vector<std::array<Exact, 2>>& queries,
-                          bool trim) {
+                          bool trim, bool incremental) {
   ReceiverArrangement out;
   std::vector<Lens> lenses;
   std::vector<Curve> input;
@@ -229,7 +230,11 @@ ReceiverArrangement build(const std::vector<ArrangementCurve>& curves, const std
     add_polyline(c, input);
   }
   Arrangement arr;
-  CGAL::insert(arr, input.begin(), input.end());
+  if (incremental) {
+    for (const auto& cv : input) CGAL::insert(arr, cv);  // zone walks instead of one sweep
+  } else {
+    CGAL::insert(arr, input.begin(), input.end());
+  }
   out.vertices = arr.number_of_vertices();
   out.edges = arr.number_of_edges();
 
@@ -313,8 +318,14 @@ ReceiverArrangement build(const std::vector<ArrangementCurve>& curves, const std
   }
 
   CGAL::Arr_walk_along_line_point_location<Arrangement> pl(arr);
+  std::optional<CGAL::Arr_naive_point_location<Arrangement>> naive;
   for (const auto& q : queries) {
-    const auto obj = pl.locate(alg_point(q));
+    auto obj = pl.locate(alg_point(q));
+    if (const auto* fh = boost::get<Arrangement::Face_const_handle>(&obj); fh && (*fh)->data() < 0) {
+      // The walk can end in a wrong face with CGAL 5.5's conic traits: ask the naive location (every edge).
+      if (!naive) naive.emplace(arr);
+      obj = naive->locate(alg_point(q));
+    }
     int id = -1;
     if (const auto* fh = boost::get<Arrangement::Face_const_handle>(&obj)) id = (*fh)->data();
     else if (const auto* hh = boost::get<Arrangement::Halfedge_const_handle>(&obj)) {
@@ -336,20 +347,20 @@ ReceiverArrangement build(const std::vector<ArrangementCurve>& curves, const std
 
 ReceiverArrangement receiver_arrangement(const std::vector<ArrangementCurve>& curves,
                                          const std::vector<std::array<Exact, 2>>& queries) {
+  // Aggregated sweep, then incremental insertion, each on the arcs as given and then trimmed.
   std::string first;
-  try {
-    return build(curves, queries, false);
-  } catch (const CGAL::Failure_exception& e) {
-    first = e.what();
-  }
-  try {
-    return build(curves, queries, true);
-  } catch (const CGAL::Failure_exception& e) {
-    ReceiverArrangement out;
-    out.failed = true;
-    out.failure = first;
-    return out;
-  }
+  for (const bool trim : {false, true})
+    for (const bool incremental : {false, true}) {
+      try {
+        return build(curves, queries, trim, incremental);
+      } catch (const CGAL::Failure_exception& e) {
+        if (first.empty()) first = e.what();
+      }
+    }
+  ReceiverArrangement out;
+  out.failed = true;
+  out.failure = first;
+  return out;
 }
 
 }  // namespace exactvis::shadows

@@ -51,8 +51,9 @@ struct ReceiverArrangement {
   std::size_t chord_curves = 0;     // curves with a conic inserted as polylines (degenerate or check failed)
   // CGAL 5.5's Arr_conic_traits_2 violates its own preconditions on some valid inputs (an inconsistent sweep
   // order: Multiset.h "comp_f(object, nodeP->object) != LARGER"), seen where an arc and a segment, or two
-  // arcs, touch tangentially (an EEE arc starting where an EV segment ends). Then the arrangement is rebuilt
-  // with each arc's first and last pieces (between its first two and last two points) as chords
+  // arcs, touch tangentially (an EEE arc starting where an EV segment ends). Then the curves are inserted one
+  // by one (zone walks) instead of by one sweep; failing that, the arrangement is rebuilt (sweep, then one by
+  // one) with each arc's first and last pieces (between its first two and last two points) as chords
   // (`trimmed_arcs`); a face sample is then taken outside every such chord's lens triangle (the triangle of
   // the chord and the conic's tangents at its ends, which holds the arc piece: exact), so it is on the
   // same side of every true arc as of its chord; `uncertified_samples` counts faces where no edge gave such

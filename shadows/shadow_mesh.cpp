@@ -85,6 +85,10 @@ ShadowResult compute_shadows(const Scene& scene, const ShadowOptions& options) {
     std::vector<std::array<Exact, 2>> queries;
     for (const auto& f : out.mesh.faces) queries.push_back(f.sample);
     ReceiverArrangement arr = receiver_arrangement(arcs, queries);
+    // A triangulation face not located in a face inside the receiver (CGAL 5.5's conic point location can
+    // miss) makes the display mapping impossible: treated as a failure of the arrangement.
+    for (int qf : arr.query_faces)
+      if (qf < 0) arr.failed = true;
     if (arr.failed) {
       // CGAL's conic traits failed (see conic_arrangement.hpp): the faces are the triangulation's, EEE arcs
       // as chords (exact chord-polygon areas; each sample's class is exact for the sample).
@@ -111,9 +115,8 @@ ShadowResult compute_shadows(const Scene& scene, const ShadowOptions& options) {
     bool one_to_one = (arr.conic_arcs == 0 || out.arrangement_failed) && arr.faces.size() == out.mesh.faces.size();
     for (std::size_t k = 0; k < arr.query_faces.size(); ++k) {
       const int af = arr.query_faces[k];
-      if (af < 0 || cdt_of[af] >= 0) {
+      if (cdt_of[af] >= 0) {
         one_to_one = false;
-        if (af < 0) throw std::logic_error("compute_shadows: a mesh face outside the receiver's arrangement");
         continue;
       }
       cdt_of[af] = static_cast<int>(k);
