@@ -7,12 +7,15 @@
 // Jobs:
 //   api/visible.hpp    from-region visibility of triangles from a view cell or polygon, with witnesses
 //   api/events.hpp     EV and EEE visual events with occlusion (JSON as `exactvis events --json`)
+//   api/pvs.hpp        potentially visible sets of view cells (JSON as `exactvis pvs --json`)
+//   api/skeleton.hpp   the 3D visibility skeleton (JSON as `exactvis skeleton --json`)
 //   api/complex2d.hpp  the 2D visibility complex (JSON as `exactvis complex2d --json`)
-// To be wired when their subcommands land on main (one header each, same shape):
-//   PVS (potentially visible sets of view cells), the 3D visibility skeleton, shadows (discontinuity
-//   meshes), exterior and aspect graphs: see the lead's notes in issue #17.
+// Not yet here (one header each, same shape, when written): shadows (discontinuity meshes), exterior and
+// aspect graphs.
 #include "api/complex2d.hpp"
 #include "api/events.hpp"
+#include "api/pvs.hpp"
+#include "api/skeleton.hpp"
 #include "api/visible.hpp"
 #include "io/load_scene.hpp"
 #include "io/scene2d_json.hpp"

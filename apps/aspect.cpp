@@ -3,7 +3,9 @@
 #include "apps/cli_util.hpp"
 #include "apps/command_registry.hpp"
 #include "aspect/convex_aspect_graph.hpp"
+#include "aspect/closed_solid_fronts.hpp"
 #include "aspect/convex_model.hpp"
+#include "aspect/orthographic_aspect_graph.hpp"
 #include "aspect/partition_picture.hpp"
 #include "io/atomic_file.hpp"
 #include "io/load_scene.hpp"
@@ -65,12 +67,12 @@ ojson graph_json(const AspectGraph3& g) {
   return j;
 }
 
-std::string summary(const AspectGraph3& g, std::size_t planes) {
+std::string summary(const AspectGraph3& g, const std::string& what) {
   const bool ortho = g.view == ViewModel::Orthographic, plane = g.view == ViewModel::Plane;
   std::array<std::size_t, 4> per_dim{0, 0, 0, 0};
   for (const auto& r : g.regions) ++per_dim[r.dimension];
   std::string s = std::string(ortho ? "orthographic" : (plane ? "plane" : "perspective")) +
-                  " aspect graph of a convex model with " + std::to_string(planes) + " face planes: " +
+                  " aspect graph of " + what + ": " +
                   std::to_string(g.regions.size()) + " regions (";
   for (int d = ortho || plane ? 2 : 3; d >= 0; --d)
     s += std::to_string(per_dim[d]) + " of dimension " + std::to_string(d) + (d ? ", " : "");
@@ -139,16 +141,48 @@ std::vector<PngPanel> png_panels(const Scene& scene, const ConvexModel& model, c
 
 // Cost warning before the work (docs/cli.md): time scaled from docs/performance.md (bench_aspect: 3.9 CPU s
 // for 186 face planes orthographic, growth below m^3; 7.7 s for 62 planes perspective, below m^4).
-std::string cost_warning(std::size_t m, ViewModel view) {
+std::string cost_warning(std::size_t m, ViewModel view, const char* what = "face planes") {
   const bool ortho = view == ViewModel::Orthographic;
   const double seconds = ortho ? 3.9 * std::pow(m / 186.0, 3) : 7.7 * std::pow(m / 62.0, 4);
   if (seconds < 60) return "";
   std::ostringstream w;
   w.precision(2);
-  w << "aspect: warning: " << m << " face planes: the " << (ortho ? "orthographic" : "perspective")
+  w << "aspect: warning: " << m << " " << what << ": the " << (ortho ? "orthographic" : "perspective")
     << " arrangement has O(m^" << (ortho ? 2 : 3) << ") cells at O(m) each; roughly " << seconds
     << " s (scaled from docs/performance.md)";
   return w.str();
+}
+
+// Orthographic, a closed solid that is not convex (aspect/orthographic_aspect_graph: its front parts must be
+// convex, else a one-line error).
+int run_general_orthographic(const AspectOptions& o, const Scene& scene, const std::string& label,
+                             OutputFiles& outputs) {
+  if (!o.vtp.empty() || !o.png.empty())
+    throw std::invalid_argument(std::string(o.vtp.empty() ? "--png" : "--vtp") +
+                                ": pictures of the aspect partition of non-convex models are not implemented yet");
+  const ClosedSolidFronts fronts = closed_solid_fronts(scene);
+  if (!fronts.ok) throw InputError(label + ": " + fronts.problem);
+  const std::size_t circles = orthographic_aspect_circles(scene, fronts);
+  if (const std::string w = cost_warning(circles, ViewModel::Orthographic, "great circles"); !w.empty() && !o.quiet)
+    std::cerr << w << std::endl;
+  const AspectGraph3 g = [&] {
+    app::FractionProgress bar("aspect: arrangement", app::progress_wanted(o.quiet));
+    return orthographic_aspect_graph(scene, fronts, bar.callback());
+  }();
+  const ojson j = graph_json(g);
+  if (!o.output.empty())
+    outputs.write(o.output, [&](const std::string& temp) {
+      std::ofstream out(temp);
+      out << j.dump(1) << "\n";
+      return static_cast<bool>(out);
+    });
+  outputs.commit();
+  if (o.json) std::cout << j.dump(1) << "\n";
+  else
+    std::cout << summary(g, "a non-convex closed model with " + std::to_string(scene.triangles.size()) +
+                                " triangles (" + std::to_string(circles) + " great circles)")
+              << "\n";
+  return 0;
 }
 
 int run(const AspectOptions& o) {
@@ -176,8 +210,7 @@ int run(const AspectOptions& o) {
     if (!o.plane.empty())
       throw InputError(label + ": not a closed convex model (" + model.problem +
                        "); --plane z=H on non-convex models is not implemented yet");
-    throw InputError(label + ": not a closed convex model (" + model.problem +
-                     "); the orthographic aspect graph of non-convex models is not implemented yet");
+    return run_general_orthographic(o, scene, label, outputs);
   }
   const ViewModel view =
       o.orthographic ? ViewModel::Orthographic : (o.perspective ? ViewModel::Perspective : ViewModel::Plane);
@@ -218,7 +251,7 @@ int run(const AspectOptions& o) {
   }
   outputs.commit();
   if (o.json) std::cout << j.dump(1) << "\n";
-  else std::cout << summary(g, model.planes.size()) << "\n";
+  else std::cout << summary(g, "a convex model with " + std::to_string(model.planes.size()) + " face planes") << "\n";
   return 0;
 }
 
@@ -228,7 +261,8 @@ const exactvis::app::CommandRegistration registration(
       CLI::App* sub = parent.add_subcommand(
           "aspect", "exact aspect graph of a 3D model: regions of viewpoints with one set of visible triangles");
       sub->add_option("scene", opts->scenes, "Scene files (.obj .ply .off .stl), loaded as one scene")->required();
-      auto* ort = sub->add_flag("--orthographic", opts->orthographic, "viewpoints are directions (the viewing sphere)");
+      auto* ort = sub->add_flag("--orthographic", opts->orthographic, "viewpoints are directions (the viewing sphere); convex models and closed solids whose front parts are convex "
+                                "(docs/theory.md 10.5)");
       auto* per = sub->add_flag("--perspective", opts->perspective,
                                 "viewpoints are points outside the model (convex models only)");
       auto* pla = sub->add_option("--plane", opts->plane, "viewpoints on the plane z=H (H a number or num/den; convex models)");

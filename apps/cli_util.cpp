@@ -12,21 +12,6 @@
 
 namespace exactvis::app {
 
-std::vector<std::string> split(const std::string& s, char sep) {
-  std::vector<std::string> out;
-  std::string cur;
-  std::istringstream in(s);
-  while (std::getline(in, cur, sep)) out.push_back(cur);
-  if (!s.empty() && s.back() == sep) out.push_back("");
-  return out;
-}
-
-std::string trim(const std::string& s) {
-  const auto b = s.find_first_not_of(" \t");
-  const auto e = s.find_last_not_of(" \t");
-  return b == std::string::npos ? "" : s.substr(b, e - b + 1);
-}
-
 std::optional<double> to_double(const std::string& text) {
   if (text.empty() || std::isspace(static_cast<unsigned char>(text[0]))) return std::nullopt;
   errno = 0;
@@ -66,6 +51,22 @@ region::RationalBox3 parse_box(const std::string& text, const std::string& what)
     if (!(b.lo[k] < b.hi[k])) throw std::invalid_argument(what + ": need X0 < X1, Y0 < Y1 and Z0 < Z1");
   }
   return b;
+}
+
+std::array<long, 3> parse_grid(const std::string& text) {
+  const auto parts = split(text, ',');
+  const std::string msg = "--grid: need 3 whole numbers NX,NY,NZ, each 1 .. 100000";
+  if (parts.size() != 3) throw std::invalid_argument(msg);
+  std::array<long, 3> n{};
+  for (int k = 0; k < 3; ++k) {
+    const std::string t = trim(parts[k]);
+    if (t.empty() || t.size() > 6 || t.find_first_not_of("0123456789") != std::string::npos)
+      throw std::invalid_argument(msg + " ('" + t + "')");
+    n[k] = std::stol(t);
+    if (n[k] < 1 || n[k] > 100000) throw std::invalid_argument(msg + " ('" + t + "')");
+  }
+  if (n[0] * n[1] * n[2] > 100'000'000) throw std::invalid_argument("--grid: more than 10^8 cells");
+  return n;
 }
 
 region::RationalBox3 parse_cell(const std::string& text) { return parse_box(text, "--cell"); }
@@ -135,6 +136,22 @@ int check_thread_count(int threads, const std::string& what) {
     throw std::invalid_argument(what + ": " + std::to_string(threads) + " is not a thread count (0 = all cores, or 1 .. " +
                                 std::to_string(region::kMaxThreads) + ")");
   return threads;
+}
+
+std::array<int, 2> parse_png_size(const std::string& text) {
+  const std::string t = trim(text);
+  const auto x = t.find('x');
+  const std::string msg = "--png-size: '" + t + "' is not WxH with W and H in 16 .. 8192";
+  if (x == std::string::npos) throw std::invalid_argument(msg);
+  std::array<int, 2> size{};
+  const std::string parts[2] = {t.substr(0, x), t.substr(x + 1)};
+  for (int k = 0; k < 2; ++k) {
+    if (parts[k].empty() || parts[k].size() > 4 || parts[k].find_first_not_of("0123456789") != std::string::npos)
+      throw std::invalid_argument(msg);
+    size[k] = std::stoi(parts[k]);
+    if (size[k] < 16 || size[k] > 8192) throw std::invalid_argument(msg);
+  }
+  return size;
 }
 
 nlohmann::ordered_json exact_json(const Exact& x) { return nlohmann::ordered_json(exact_to_json(x)); }

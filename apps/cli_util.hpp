@@ -13,10 +13,12 @@
 #include "region/cell_visibility.hpp"
 #include "region/convex_polygon_3.hpp"
 #include "util/progress_bar.hpp"
+#include "util/text_split.hpp"
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -25,11 +27,9 @@
 
 namespace exactvis::app {
 
-// ---- text
-// The items of s between separators, empty ones included ("a,,b" -> a, "", b; "a," -> a, ""; "" -> none).
-std::vector<std::string> split(const std::string& s, char sep);
-// s without leading and trailing spaces and tabs.
-std::string trim(const std::string& s);
+// ---- text: split and trim (util/text_split.hpp)
+using exactvis::split;
+using exactvis::trim;
 
 // ---- numbers
 // The double a complete decimal/scientific literal denotes (nearest double; subnormal results and results
@@ -58,6 +58,14 @@ std::uint64_t parse_uint64(const std::string& text, const std::string& what);
 // A worker thread count: 0 (all cores) or 1 .. region::kMaxThreads; throws "WHAT: N is not a thread count
 // (0 = all cores, or 1 .. 1024)".
 int check_thread_count(int threads, const std::string& what);
+
+// --grid "NX,NY,NZ": three whole numbers, each 1 .. 100000, at most 10^8 cells in all. Throws "--grid: need 3
+// whole numbers NX,NY,NZ, each 1 .. 100000 ('T')" or "--grid: more than 10^8 cells".
+std::array<long, 3> parse_grid(const std::string& text);
+
+// --png-size "WxH": the picture's width and height in pixels, each 16 .. 8192; throws "--png-size: 'T' is
+// not WxH with W and H in 16 .. 8192".
+std::array<int, 2> parse_png_size(const std::string& text);
 
 // ---- JSON
 // An exact value in ordered JSON (the subcommands keep their documented key order): io/json_number.hpp.

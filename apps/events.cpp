@@ -1,4 +1,5 @@
-// `exactvis events SCENE... [--light SPEC] [--kinds EV,EEE] [--json] [--vtp FILE]`: EV and EEE visual events
+// `exactvis events SCENE... [--light SPEC] [--kinds EV,EEE] [--json] [--vtp FILE] [--png FILE [--png-size WxH]]
+//  [-q]`: EV and EEE visual events
 // with occlusion (docs/cli.md "events", definitions in docs/theory.md section 6).
 #include "apps/cli_util.hpp"
 #include "apps/command_registry.hpp"
@@ -6,9 +7,13 @@
 #include "events/eee_enumeration.hpp"
 #include "events/ev_events.hpp"
 #include "events/light_source.hpp"
+#include "io/atomic_file.hpp"
 #include "io/load_scene.hpp"
+#include "io/result_pictures.hpp"
 #include "io/write_event_json.hpp"
 #include "io/write_event_surfaces.hpp"
+#include "util/format_number.hpp"
+#include "util/text_table.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -23,6 +28,8 @@ struct EventsOptions {
   std::string light;
   bool json = false;
   std::string vtp;
+  std::string png;
+  std::string png_size = "1280x960";
   std::string kinds = "EV,EEE";
   bool no_split = false;
   bool no_progress = false;
@@ -30,6 +37,8 @@ struct EventsOptions {
 
 int run_events(const EventsOptions& o) {
   const auto [want_ev, want_eee] = exactvis::api::parse_event_kinds(o.kinds);
+  const std::array<int, 2> png_size = exactvis::app::parse_png_size(o.png_size);
+  exactvis::OutputFiles outputs({o.vtp, o.png});  // checked now, written together at the end
   exactvis::Scene scene = exactvis::load_scenes(o.scenes);
   exactvis::api::EventsRequest request;  // the job itself is api/events.hpp (also the Python module's)
   request.ev = want_ev;
@@ -40,55 +49,76 @@ int run_events(const EventsOptions& o) {
   const exactvis::api::EventsAnswer answer = exactvis::api::events(scene, request);
   const exactvis::EvResult& r = answer.ev;
   const exactvis::EeeResult& eee = answer.eee;
-  if (!o.vtp.empty()) exactvis::write_event_surfaces_vtp(o.vtp, scene, r, eee);
+  if (!o.vtp.empty())
+    outputs.write(o.vtp, [&](const std::string& temp) { return exactvis::write_event_surfaces_vtp(temp, scene, r, eee), true; });
+  if (!o.png.empty()) {
+    // Two strip pieces per free interval: two exact ray casts per sample, a third of the --vtp cost.
+    const exactvis::ScenePicture picture = exactvis::events_picture(
+        scene, r, eee, 2,
+        "exactvis events: " + exactvis::format_count(static_cast<std::int64_t>(r.events.size())) + " EV, " +
+            exactvis::format_count(static_cast<std::int64_t>(eee.events.size())) + " EEE");
+    outputs.write(o.png, [&](const std::string& temp) {
+      return exactvis::render_scene_png(temp, picture, png_size[0], png_size[1]);
+    });
+  }
+  outputs.commit();
   if (o.json) {
     std::cout << exactvis::api::events_json(scene, answer).dump(2) << "\n";
     return 0;
   }
+  using exactvis::format_count;
   if (want_ev) {
-    std::cout << "EV events: " << r.events.size() << "\n"
-              << "  pairs examined: " << r.stats.pairs << ", tangent at the edge: " << r.stats.tangent_pairs
-              << ", exact occluder tests: " << r.stats.occluder_tests << "\n";
+    std::cout << "EV events: " << format_count(static_cast<std::int64_t>(r.events.size())) << "\n"
+              << "  pairs examined: " << format_count(r.stats.pairs)
+              << ", tangent at the edge: " << format_count(r.stats.tangent_pairs)
+              << ", exact occluder tests: " << format_count(r.stats.occluder_tests) << "\n";
+    std::vector<std::vector<std::string>> rows;
+    for (const auto& ev : r.events) {
+      if (rows.size() == exactvis::kSummaryRows) break;
+      // Free intervals proper: pieces cut where the end objects change are shown joined.
+      std::string intervals;
+      std::size_t count = 0;
+      for (std::size_t k = 0; k < ev.intervals.size();) {
+        std::size_t last = k;
+        while (last + 1 < ev.intervals.size() &&
+               ev.intervals[last].end1.cause == exactvis::CriticalEnd::Cause::EndObjectChange &&
+               ev.intervals[last].t1 == ev.intervals[last + 1].t0)
+          ++last;
+        intervals += (count++ ? " " : "") + std::string("[") + exactvis::root_number_to_string(ev.intervals[k].t0) +
+                     ", " + exactvis::root_number_to_string(ev.intervals[last].t1) + "]";
+        k = last + 1;
+      }
+      rows.push_back({format_count(ev.vertex), "[" + format_count(ev.edge[0]) + ", " + format_count(ev.edge[1]) + "]",
+                      intervals});
+    }
+    exactvis::print_table(std::cout, {"vertex", "edge", "free intervals"}, rows,
+                          static_cast<std::int64_t>(r.events.size()));
   } else {
     std::cout << "EV events: not computed (--kinds)\n";
   }
   if (want_eee) {
-    std::cout << "EEE events: " << eee.events.size() << "\n"
-              << "  outer pairs examined: " << eee.stats.outer_pairs << ", kept: " << eee.stats.outer_pairs_kept
-              << ", candidate triples: " << eee.stats.candidate_triples
-              << ", exact occluder tests: " << eee.stats.eee.occluder_tests << "\n";
+    std::cout << "EEE events: " << format_count(static_cast<std::int64_t>(eee.events.size())) << "\n"
+              << "  outer pairs examined: " << format_count(eee.stats.outer_pairs)
+              << ", kept: " << format_count(eee.stats.outer_pairs_kept)
+              << ", candidate triples: " << format_count(eee.stats.candidate_triples)
+              << ", exact occluder tests: " << format_count(eee.stats.eee.occluder_tests) << "\n";
+    std::vector<std::vector<std::string>> rows;
+    for (const auto& ev : eee.events) {
+      if (rows.size() == exactvis::kSummaryRows) break;
+      std::string edges, intervals;
+      for (const auto& e : ev.edges)
+        edges += (edges.empty() ? "" : " ") + std::string("[") + format_count(e[0]) + ", " + format_count(e[1]) + "]";
+      for (const auto& iv : ev.intervals)
+        intervals += (intervals.empty() ? "" : " ") + std::string("[") + exactvis::root_number_to_string(iv.t0) + ", " +
+                     exactvis::root_number_to_string(iv.t1) + "]";
+      rows.push_back({edges, intervals});
+    }
+    exactvis::print_table(std::cout, {"edges", "free intervals"}, rows, static_cast<std::int64_t>(eee.events.size()));
   } else {
     std::cout << "EEE events: not computed (--kinds)\n";
   }
-  for (const auto& ev : r.events) {
-    std::cout << "EV vertex " << ev.vertex << " edge [" << ev.edge[0] << ", " << ev.edge[1] << "]:";
-    // Free intervals proper: pieces cut where the end objects change are printed joined, with the cuts.
-    for (std::size_t k = 0; k < ev.intervals.size();) {
-      std::size_t last = k;
-      while (last + 1 < ev.intervals.size() &&
-             ev.intervals[last].end1.cause == exactvis::CriticalEnd::Cause::EndObjectChange &&
-             ev.intervals[last].t1 == ev.intervals[last + 1].t0)
-        ++last;
-      std::cout << " [" << exactvis::root_number_to_string(ev.intervals[k].t0) << ", "
-                << exactvis::root_number_to_string(ev.intervals[last].t1) << "]";
-      if (last > k) {
-        std::cout << " (end objects change at";
-        for (std::size_t c = k; c < last; ++c) std::cout << " " << exactvis::root_number_to_string(ev.intervals[c].t1);
-        std::cout << ")";
-      }
-      k = last + 1;
-    }
-    std::cout << "\n";
-  }
-  for (const auto& ev : eee.events) {
-    std::cout << "EEE edges";
-    for (const auto& e : ev.edges) std::cout << " [" << e[0] << ", " << e[1] << "]";
-    std::cout << ":";
-    for (const auto& iv : ev.intervals)
-      std::cout << " [" << exactvis::root_number_to_string(iv.t0) << ", " << exactvis::root_number_to_string(iv.t1)
-                << "]";
-    std::cout << "\n";
-  }
+  for (const std::string& f : {o.vtp, o.png})
+    if (!f.empty()) std::cout << "wrote " << f << "\n";
   return 0;
 }
 
@@ -105,6 +135,10 @@ const exactvis::app::CommandRegistration registration("events", 110, [](CLI::App
       ->capture_default_str();
   sub->add_flag("--json", opts->json, "Machine-readable JSON on stdout");
   sub->add_option("--vtp", opts->vtp, "Write the event surfaces (EV wedges, EEE ruled strips) to this .vtp file");
+  sub->add_option("--png", opts->png,
+                  "Render a picture (VTK offscreen; starts Xvfb when DISPLAY is unset): the event surfaces (EV "
+                  "orange, EEE purple) over the scene in grey, a legend");
+  sub->add_option("--png-size", opts->png_size, "Size of the --png picture in pixels, WxH")->capture_default_str();
   sub->add_flag("--no-split", opts->no_split,
                 "Do not split EV free intervals where the end objects change (faster on large scenes; segment_ends "
                 "are then those of each interval's midpoint line only)");

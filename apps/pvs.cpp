@@ -1,21 +1,28 @@
 // `exactvis pvs SCENE... (--grid NX,NY,NZ [--box X0,Y0,Z0,X1,Y1,Z1] | --cells cells.json) [--json] [-o FILE]
-//  [--jsonl] [--resume] [--no-witnesses] [--vtp DIR] [--method exact] [--shard K/N] [--threads N] [-q]`:
+//  [--jsonl] [--resume] [--no-witnesses] [--vtp DIR] [--png F [--png-cell K] [--png-size WxH] [--witnesses]]
+//  [--method exact|sampled|conservative] [--shard K/N] [--threads N] [-q]`:
 // the exact potentially visible set of every view cell, with a witness per visible triangle (docs/cli.md).
+#include "api/pvs.hpp"
 #include "apps/cli_util.hpp"
 #include "apps/command_registry.hpp"
 #include "apps/pvs_run.hpp"
 #include "io/atomic_file.hpp"
 #include "io/load_scene.hpp"
+#include "io/json_number.hpp"
 #include "io/pvs_json.hpp"
+#include "io/result_pictures.hpp"
 #include "io/view_cells_json.hpp"
 #include "io/write_visibility_vtp.hpp"
 #include "region/pvs_method.hpp"
-#include "region/view_cell_grid.hpp"
 #include "util/cells_progress.hpp"
+#include "util/format_number.hpp"
+#include "util/text_table.hpp"
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <sstream>
 
 namespace {
 
@@ -28,25 +35,12 @@ struct PvsCliOptions {
   std::string grid, box, cells;
   bool json = false, jsonl = false, resume = false, no_witnesses = false, quiet = false, no_hierarchy = false;
   std::string output, vtp, method = "exact", shard, seed = "1";
+  std::string png, png_size = "1280x960";
+  std::int64_t png_cell = 0;
+  bool witnesses = false;
   int samples = 48, threads = 0;
   std::int64_t rays = -1;  // -1: the method's default (exact: 8 per triangle; sampled: 100000 per cell)
 };
-
-std::array<long, 3> parse_grid(const std::string& text) {
-  const auto parts = split(text, ',');
-  const std::string msg = "--grid: need 3 whole numbers NX,NY,NZ, each 1 .. 100000";
-  if (parts.size() != 3) throw std::invalid_argument(msg);
-  std::array<long, 3> n{};
-  for (int k = 0; k < 3; ++k) {
-    const std::string t = trim(parts[k]);
-    if (t.empty() || t.size() > 6 || t.find_first_not_of("0123456789") != std::string::npos)
-      throw std::invalid_argument(msg + " ('" + t + "')");
-    n[k] = std::stol(t);
-    if (n[k] < 1 || n[k] > 100000) throw std::invalid_argument(msg + " ('" + t + "')");
-  }
-  if (n[0] * n[1] * n[2] > 100'000'000) throw std::invalid_argument("--grid: more than 10^8 cells");
-  return n;
-}
 
 app::Shard parse_shard(const std::string& text) {
   const std::string msg = "--shard: need K/N with whole numbers 0 <= K < N";
@@ -76,6 +70,33 @@ void write_cell_vtp(const std::string& dir, const Scene& scene, std::int64_t cel
                        state, segs);
 }
 
+// The --png picture of one CELL (its JSON, so a cell finished by an earlier --resume run is drawn too):
+// visible triangles green, the others hidden (a PVS decides every triangle), the cell's box, and the witnesses
+// when asked for and present.
+ScenePicture cell_picture(const Scene& scene, const OrderedJson& cell, bool draw_witnesses) {
+  std::vector<int> state(scene.triangles.size(), 0);
+  for (const auto& id : cell["visible"]) {
+    const std::int64_t i = scene.index_of_id(id.get<std::int64_t>());
+    if (i >= 0) state[i] = 1;
+  }
+  auto dbl = [](const nlohmann::ordered_json& v) { return CGAL::to_double(exact_from_json(nlohmann::json(v))); };
+  std::vector<WitnessSegment> segs;
+  if (draw_witnesses && cell.contains("witnesses"))
+    for (const auto& [id, w] : cell["witnesses"].items())
+      segs.push_back({std::stoll(id), Point3{dbl(w[0][0]), dbl(w[0][1]), dbl(w[0][2])},
+                      Point3{dbl(w[1][0]), dbl(w[1][1]), dbl(w[1][2])}});
+  const auto& b = cell["box"];
+  const Point3 lo{dbl(b[0]), dbl(b[1]), dbl(b[2])}, hi{dbl(b[3]), dbl(b[4]), dbl(b[5])};
+  std::vector<std::vector<Point3>> faces;
+  for (const auto& e : box_edges(lo, hi)) faces.push_back({e[0], e[1]});
+  const std::int64_t visible = static_cast<std::int64_t>(cell["visible"].size());
+  ScenePicture pic = visibility_picture(
+      scene, state, segs, faces,
+      "exactvis pvs, cell " + format_count(cell["cell"].get<std::int64_t>()) + ": " + format_count(visible) + " of " +
+          format_count(static_cast<std::int64_t>(scene.triangles.size())) + " triangles visible");
+  return pic;
+}
+
 int run_pvs(const PvsCliOptions& o) {
   // ---- options (all checked before any work)
   if (o.grid.empty() == o.cells.empty()) throw std::invalid_argument("give exactly one of --grid and --cells");
@@ -103,9 +124,12 @@ int run_pvs(const PvsCliOptions& o) {
   if (o.resume && (!lines || o.output.empty()))
     throw std::invalid_argument("--resume: needs the JSON-lines output -o FILE.jsonl (or --jsonl -o FILE)");
   if (o.json && o.jsonl) throw std::invalid_argument("--json and --jsonl: choose one output form");
-  const std::array<long, 3> grid = o.grid.empty() ? std::array<long, 3>{} : parse_grid(o.grid);
+  const std::array<long, 3> grid = o.grid.empty() ? std::array<long, 3>{} : app::parse_grid(o.grid);
   std::optional<region::RationalBox3> box;
   if (!o.box.empty()) box = app::parse_box(o.box, "--box");
+
+  const std::array<int, 2> png_size = app::parse_png_size(o.png_size);
+  if (o.png_cell < 0) throw std::invalid_argument("--png-cell: must be a cell number >= 0");
 
   app::CellScheduler scheduler;  // MPI_Init here when started by mpirun
 
@@ -115,15 +139,7 @@ int run_pvs(const PvsCliOptions& o) {
   if (!o.cells.empty()) {
     cells = read_view_cells(o.cells);
   } else {
-    if (!box) {
-      if (scene.triangles.empty()) throw std::invalid_argument("--grid: the scene is empty; give --box");
-      box = region::exact_box(bounding_box(scene));
-      for (int k = 0; k < 3; ++k)
-        if (!(box->lo[k] < box->hi[k]))
-          throw std::invalid_argument(std::string("--grid: the scene's bounding box is flat in ") + "xyz"[k] +
-                                      "; give --box");
-    }
-    cells = region::grid_cells(*box, grid);
+    cells = api::grid_view_cells(scene, grid, box);
   }
   const OrderedJson scene_label = o.scenes.size() == 1 ? OrderedJson(o.scenes[0]) : OrderedJson(o.scenes);
   const auto cell_count = static_cast<std::int64_t>(cells.size());
@@ -131,6 +147,9 @@ int run_pvs(const PvsCliOptions& o) {
   if (sharded) shard_json = OrderedJson{{"index", shard.index}, {"count", shard.count}, {"cell_count", cell_count}};
   std::vector<std::int64_t> mine;
   for (std::int64_t c = shard.index; c < cell_count; c += shard.count) mine.push_back(c);
+  if (!o.png.empty() && (o.png_cell >= cell_count || (o.png_cell - shard.index) % shard.count != 0))
+    throw std::invalid_argument("--png-cell: cell " + std::to_string(o.png_cell) + " is not among the cells of this run (" +
+                                std::to_string(cell_count) + " cells" + (sharded ? ", --shard " + o.shard : "") + ")");
 
   // ---- outputs: the document is staged and committed at the end; JSON lines are appended as cells finish
   const bool with_witnesses = !o.no_witnesses;
@@ -142,7 +161,9 @@ int run_pvs(const PvsCliOptions& o) {
   std::unique_ptr<OutputFiles> doc_output;
   std::ofstream lines_out;
   const bool writer = scheduler.writer();
-  if (writer && !lines && !o.output.empty()) doc_output = std::make_unique<OutputFiles>(std::vector<std::string>{o.output});
+  // The document and the picture appear together (JSON lines are appended as cells finish, not staged).
+  if (writer && ((!lines && !o.output.empty()) || !o.png.empty()))
+    doc_output = std::make_unique<OutputFiles>(std::vector<std::string>{lines ? std::string() : o.output, o.png});
   if (lines && !o.output.empty()) {  // every rank reads what is finished; only the writer touches the file
     std::uint64_t keep = 0;
     if (o.resume && std::filesystem::exists(o.output)) {
@@ -182,6 +203,12 @@ int run_pvs(const PvsCliOptions& o) {
 
   // ---- the cells
   const region::PvsContext context(scene);
+  if (method == region::PvsMethod::conservative && writer && !o.quiet) {
+    const region::ExtrudedScene& ex = context.extruded();
+    std::cerr << "pvs --method conservative: "
+              << (ex.is_25d ? "the scene is 2.5D" : "the scene is not 2.5D (" + ex.reason + "): fallback") << ", "
+              << ex.walls.size() << " wall rectangles as occluders\n";
+  }
   {
     CellsProgress bar("pvs", mine.size(), "triangles", writer && app::progress_wanted(o.quiet));
     for (std::size_t i = 0; i < mine.size() - todo.size(); ++i) bar.finish_item();
@@ -195,6 +222,9 @@ int run_pvs(const PvsCliOptions& o) {
         std::cerr << "cell " << job.index << ": " << pvs.stats.rays_cast << " rays in " << pvs.stats.seconds << " s ("
                   << (pvs.stats.seconds > 0 ? static_cast<double>(pvs.stats.rays_cast) / pvs.stats.seconds : 0.0)
                   << " rays/s), " << pvs.stats.visible << " triangles confirmed\n";
+      if (method == region::PvsMethod::conservative && !o.quiet)
+        std::cerr << "cell " << job.index << ": " << pvs.stats.culled << " of " << pvs.stats.triangles
+                  << " triangles proved hidden in " << pvs.stats.seconds << " s, " << pvs.stats.visible << " listed\n";
       if (!o.vtp.empty()) write_cell_vtp(o.vtp, scene, job.index, pvs);
       return pvs_cell_json(scene, job.index, pvs, with_witnesses);
     };
@@ -204,32 +234,67 @@ int run_pvs(const PvsCliOptions& o) {
         std::ostream& out = o.output.empty() ? std::cout : static_cast<std::ostream&>(lines_out);
         out << cell.dump() << "\n" << std::flush;
         if (!out) throw OutputError((o.output.empty() ? std::string("stdout") : o.output) + ": cannot write");
-      } else if (!o.json && o.output.empty()) {
-        std::cout << "cell " << cell["cell"].get<std::int64_t>() << ": " << cell["visible"].size() << " of "
-                  << scene.triangles.size() << " triangles visible, " << cell["objects"].size() << " of "
-                  << scene.objects.size() << " objects\n";
       }
       done_cells.push_back(cell);
     };
     scheduler.run(todo, hooks);
   }
   if (!writer) return 0;  // an MPI worker rank: rank 0 writes the outputs
+  std::sort(done_cells.begin(), done_cells.end(), [](const OrderedJson& a, const OrderedJson& b) {
+    return a["cell"].get<std::int64_t>() < b["cell"].get<std::int64_t>();
+  });
+
+  // ---- the picture
+  if (writer && !o.png.empty()) {
+    const auto it = std::find_if(done_cells.begin(), done_cells.end(), [&](const OrderedJson& c) {
+      return c["cell"].get<std::int64_t>() == o.png_cell;
+    });
+    if (it == done_cells.end()) throw OutputError(o.png + ": cell " + std::to_string(o.png_cell) + " was not computed");
+    const ScenePicture picture = cell_picture(scene, *it, o.witnesses);
+    doc_output->write(o.png, [&](const std::string& temp) { return render_scene_png(temp, picture, png_size[0], png_size[1]); });
+  }
+
+  // ---- the text summary (the full result is the JSON)
+  std::ostringstream summary;  // printed once the files are in place
+  if (!o.json && !(lines && o.output.empty())) {
+    std::vector<std::vector<std::string>> rows;
+    std::int64_t visible_sum = 0;
+    for (const auto& c : done_cells) {
+      visible_sum += static_cast<std::int64_t>(c["visible"].size());
+      if (rows.size() == kSummaryRows) continue;
+      rows.push_back({format_count(c["cell"].get<std::int64_t>()),
+                      format_count(static_cast<std::int64_t>(c["visible"].size())),
+                      format_count(static_cast<std::int64_t>(c["objects"].size()))});
+    }
+    const auto n_tri = static_cast<std::int64_t>(scene.triangles.size());
+    summary << format_count(static_cast<std::int64_t>(done_cells.size())) << " cells, " << format_count(n_tri)
+              << " triangles, " << format_count(static_cast<std::int64_t>(scene.objects.size())) << " objects\n";
+    print_table(summary, {"cell", "visible triangles", "visible objects"}, rows,
+                static_cast<std::int64_t>(done_cells.size()));
+    if (!done_cells.empty())
+      summary << "mean PVS: " << format_measure(static_cast<double>(visible_sum) / static_cast<double>(done_cells.size()))
+                << " of " << format_count(n_tri) << " triangles\n";
+    for (const std::string& f : {o.output, o.png})
+      if (!f.empty()) summary << "wrote " << f << "\n";
+    if (!o.vtp.empty()) summary << "wrote " << o.vtp << "/cell_<i>.vtp\n";
+  }
 
   // ---- the document
   if (!lines) {
     const OrderedJson doc = pvs_document(scene_label, static_cast<std::int64_t>(scene.triangles.size()),
                                          std::move(done_cells), shard_json);
-    if (doc_output) {
+    if (!o.output.empty()) {
       doc_output->write(o.output, [&](const std::string& temp) {
         std::ofstream out(temp);
         out << doc.dump() << "\n";
         return static_cast<bool>(out);
       });
-      doc_output->commit();
     } else if (o.json) {
       std::cout << doc.dump() << "\n";
     }
   }
+  if (doc_output) doc_output->commit();
+  std::cout << summary.str();
   return 0;
 }
 
@@ -251,9 +316,18 @@ const exactvis::app::CommandRegistration registration("pvs", 110, [](CLI::App& p
   sub->add_flag("--resume", o->resume, "With JSON-lines output: keep the cells the file already has, compute the rest");
   sub->add_flag("--no-witnesses", o->no_witnesses, "Leave the witness segments out of the output");
   sub->add_option("--vtp", o->vtp, "Write DIR/cell_<i>.vtp: the scene coloured visible/hidden for each cell");
+  sub->add_option("--png", o->png,
+                  "Render a picture of one cell (--png-cell; VTK offscreen, starts Xvfb when DISPLAY is unset): the "
+                  "scene coloured visible/hidden, the cell as a blue wire box, a legend");
+  sub->add_option("--png-cell", o->png_cell, "The cell --png draws (its number in the grid or --cells file)")
+      ->capture_default_str();
+  sub->add_option("--png-size", o->png_size, "Size of the --png picture in pixels, WxH")->capture_default_str();
+  sub->add_flag("--witnesses", o->witnesses, "Draw the cell's witness segments in the --png picture as thin lines");
   sub->add_option("--method", o->method,
-                  "PVS method: exact (every triangle decided exactly) or sampled (random rays per cell, each hit "
-                  "confirmed exactly: never lists a hidden triangle, may miss visible ones)")
+                  "PVS method: exact (every triangle decided exactly), sampled (random rays per cell, each hit "
+                  "confirmed exactly: never lists a hidden triangle, may miss visible ones) or conservative (leaves "
+                  "out only triangles proved hidden by a wall rectangle: never misses a visible one, lists extra; "
+                  "no witnesses)")
       ->capture_default_str();
   sub->add_option("--shard", o->shard, "Compute only cells K, K+N, K+2N, ... (job arrays; join with pvs-merge)");
   sub->add_option("--threads", o->threads, "Worker threads: 0 = all cores (default), else 1 .. 1024");

@@ -1,14 +1,18 @@
 // `exactvis visible SCENE... (--cell X0,Y0,Z0,X1,Y1,Z1 | --source-polygon "x,y,z;...") [--triangles all|ID,...]
-//  [--json] [-o result.json] [--vtp out.vtp]`: exact from-region visibility with witnesses.
+//  [--json] [-o result.json] [--vtp out.vtp] [--png out.png [--png-size WxH] [--witnesses]] [-q]`: exact
+//  from-region visibility with witnesses.
 #include "apps/cli_util.hpp"
 #include "apps/command_registry.hpp"
 #include "io/atomic_file.hpp"
 #include "io/json_number.hpp"
 #include "io/load_scene.hpp"
+#include "io/result_pictures.hpp"
 #include "io/write_visibility_vtp.hpp"
 #include "kernel/triangle_index.hpp"
 #include "region/cell_visibility.hpp"
+#include "util/format_number.hpp"
 #include "util/progress_bar.hpp"
+#include "util/text_table.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -29,6 +33,9 @@ struct VisibleOptions {
   bool json = false;
   std::string output;
   std::string vtp;
+  std::string png;
+  std::string png_size = "1280x960";
+  bool witnesses = false;
   int samples = 48;
   std::string seed = "1";
   int threads = 0;
@@ -89,6 +96,9 @@ int run_visible(const VisibleOptions& o) {
   const std::optional<region::RationalBox3>& cell = source.cell;
   const region::Polygon3& polygon = source.polygon;
 
+  const std::array<int, 2> png_size = app::parse_png_size(o.png_size);
+  OutputFiles outputs({o.output, o.vtp, o.png});  // checked now, written together at the end
+
   const Scene scene = load_scenes(o.scenes);
   const std::vector<std::int64_t> targets = parse_targets(o.triangles, scene);
   region::CellVisibility cv;
@@ -123,45 +133,57 @@ int run_visible(const VisibleOptions& o) {
   j["stats"]["visible"] = n_visible;
   j["stats"]["accepted_by_sampling"] = cv.accepted_by_sampling;
 
-  if (!o.vtp.empty()) {
-    std::vector<int> state(scene.triangles.size(), -1);
-    std::vector<WitnessSegment> segs;
-    for (const auto& r : results) {
-      state[r.triangle_index] = r.visible ? 1 : 0;
-      if (r.visible) {
-        auto dbl = [](const RationalPoint3& p) {
-          return Point3{CGAL::to_double(p.x), CGAL::to_double(p.y), CGAL::to_double(p.z)};
-        };
-        segs.push_back({scene.triangles[r.triangle_index].id, dbl(r.witness->p), dbl(r.witness->q)});
-      }
+  // The pictures (--vtp, --png): per-triangle state, witnesses and the source's faces (double approximations).
+  std::vector<int> state(scene.triangles.size(), -1);
+  std::vector<WitnessSegment> segs;
+  for (const auto& r : results) {
+    state[r.triangle_index] = r.visible ? 1 : 0;
+    if (r.visible) {
+      auto dbl = [](const RationalPoint3& p) {
+        return Point3{CGAL::to_double(p.x), CGAL::to_double(p.y), CGAL::to_double(p.z)};
+      };
+      segs.push_back({scene.triangles[r.triangle_index].id, dbl(r.witness->p), dbl(r.witness->q)});
     }
-    std::vector<std::vector<Point3>> source_faces;  // the cell's 6 faces or the polygon, drawn with the result
-    auto approx = [](const region::Polygon3& poly) {
-      std::vector<Point3> out;
-      for (const auto& p : poly) out.push_back({CGAL::to_double(p.x), CGAL::to_double(p.y), CGAL::to_double(p.z)});
-      return out;
-    };
-    if (cell)
-      for (int axis = 0; axis < 3; ++axis)
-        for (const bool high : {false, true}) source_faces.push_back(approx(region::box_face(*cell, axis, high)));
-    else
-      source_faces.push_back(approx(polygon));
-    write_visibility_vtp(o.vtp, scene, state, segs, source_faces);
+  }
+  std::vector<std::vector<Point3>> source_faces;  // the cell's 6 faces or the polygon, drawn with the result
+  auto approx = [](const region::Polygon3& poly) {
+    std::vector<Point3> out;
+    for (const auto& p : poly) out.push_back({CGAL::to_double(p.x), CGAL::to_double(p.y), CGAL::to_double(p.z)});
+    return out;
+  };
+  if (cell)
+    for (int axis = 0; axis < 3; ++axis)
+      for (const bool high : {false, true}) source_faces.push_back(approx(region::box_face(*cell, axis, high)));
+  else
+    source_faces.push_back(approx(polygon));
+  if (!o.vtp.empty())
+    outputs.write(o.vtp, [&](const std::string& temp) { return write_visibility_vtp(temp, scene, state, segs, source_faces), true; });
+  if (!o.png.empty()) {
+    const ScenePicture picture =
+        visibility_picture(scene, state, o.witnesses ? segs : std::vector<WitnessSegment>{}, source_faces,
+                           "exactvis visible: " + format_count(n_visible) + " of " +
+                               format_count(static_cast<std::int64_t>(results.size())) + " triangles visible");
+    outputs.write(o.png, [&](const std::string& temp) { return render_scene_png(temp, picture, png_size[0], png_size[1]); });
   }
   if (!o.output.empty()) {
-    write_atomically(o.output, [&](const std::string& temp) {
+    outputs.write(o.output, [&](const std::string& temp) {
       std::ofstream out(temp);
       out << j.dump(2) << "\n";
       return static_cast<bool>(out);
     });
   }
+  outputs.commit();
   if (o.json) {
     std::cout << j.dump(2) << "\n";
   } else {
+    std::vector<std::vector<std::string>> rows;
     for (const auto& r : results) {
-      std::cout << "triangle " << scene.triangles[r.triangle_index].id << ": "
-                << (r.visible ? "visible" : "hidden") << "\n";
+      if (rows.size() == kSummaryRows) break;
+      rows.push_back({format_count(scene.triangles[r.triangle_index].id), r.visible ? "visible" : "hidden"});
     }
+    print_table(std::cout, {"triangle", "from the source"}, rows, static_cast<std::int64_t>(results.size()));
+    for (const std::string& f : {o.output, o.vtp, o.png})
+      if (!f.empty()) std::cout << "wrote " << f << "\n";
     std::cout << n_visible << " of " << results.size() << " triangles visible\n";
   }
   return 0;
@@ -183,6 +205,11 @@ const exactvis::app::CommandRegistration registration("visible", 100, [](CLI::Ap
   sub->add_flag("--json", o->json, "Print the JSON result on stdout");
   sub->add_option("-o,--output", o->output, "Write the JSON result to this file");
   sub->add_option("--vtp", o->vtp, "Write the scene coloured visible/hidden with the witnesses as lines (.vtp)");
+  sub->add_option("--png", o->png,
+                  "Render a picture (VTK offscreen; starts Xvfb when DISPLAY is unset): the scene coloured "
+                  "visible/hidden, the cell or polygon as a blue wire frame, a legend");
+  sub->add_option("--png-size", o->png_size, "Size of the --png picture in pixels, WxH")->capture_default_str();
+  sub->add_flag("--witnesses", o->witnesses, "Draw the witness segments in the --png picture as thin lines");
   sub->add_option("--samples", o->samples, "Random segments cast per source/target pair before the exact query")
       ->capture_default_str();
   sub->add_option("--seed", o->seed, "Seed of the sampling (answers do not depend on it)")

@@ -4,12 +4,15 @@
 // shared: CPU seconds are the fairer figure).
 //
 // Usage: bench_pvs [--kinds town,forest] [--sizes 1000,10000] [--threads 1,2] [--baseline-max N]
+//                  [--methods pvs-flat,pvs]
 //   --baseline-max: run the per-triangle loop only for scenes of at most N triangles (default 10000).
+//   --methods: which PVS rows to run (default both: without and with the hierarchy).
 #include "bench/bench_util.hpp"
 #include "kernel/scene_generators.hpp"
 #include "region/cell_visibility.hpp"
 #include "region/exact_pvs.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <ctime>
 #include <string>
@@ -33,7 +36,8 @@ Timing timed(F&& f) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::vector<std::string> kinds{"town", "forest"}, sizes{"1000", "10000"}, threads{"1", "2"};
+  std::vector<std::string> kinds{"town", "forest"}, sizes{"1000", "10000"}, threads{"1", "2"},
+      methods{"pvs-flat", "pvs"};
   long baseline_max = 10000;
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string a = argv[i];
@@ -41,6 +45,7 @@ int main(int argc, char** argv) {
     else if (a == "--sizes") sizes = bench::split(argv[i + 1]);
     else if (a == "--threads") threads = bench::split(argv[i + 1]);
     else if (a == "--baseline-max") baseline_max = std::stol(argv[i + 1]);
+    else if (a == "--methods") methods = bench::split(argv[i + 1]);
   }
   std::printf("%-7s %8s %3s %-14s %8s %8s %8s %10s %8s %8s\n", "scene", "tris", "thr", "method", "wall_s", "cpu_s",
               "pvs", "tris/cpu_s", "culled", "ratio");
@@ -68,6 +73,7 @@ int main(int argc, char** argv) {
                       tm.wall, tm.cpu, static_cast<long long>(cv.visible), n / tm.cpu, "-", "1.00");
         }
         for (bool hierarchy : {false, true}) {
+          if (std::find(methods.begin(), methods.end(), hierarchy ? "pvs" : "pvs-flat") == methods.end()) continue;
           region::PvsOptions po;
           po.threads = t;
           po.hierarchy = hierarchy;

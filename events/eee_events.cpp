@@ -1,5 +1,6 @@
 #include "events/eee_events.hpp"
 
+#include "events/eee_occluder_filter.hpp"
 #include "events/interval_end_key.hpp"
 #include "kernel/ray_first_hit.hpp"
 #include "kernel/predicates.hpp"
@@ -294,8 +295,8 @@ std::optional<EeeEvent> eee_event(const Scene& scene, const SceneAdjacency& adj,
   // points lie on P([vmin, vmax]) and on the parts of E2, E3 that Q2, Q3 sweep for t in [vmin, vmax] (when
   // den_k keeps its sign there s_k is monotone, so that part is [s_k(vmin), s_k(vmax)] clipped to [0, 1];
   // else all of E_k), so every generator segment lies in the convex hull of the six points H below:
-  // candidates are the triangles meeting H's bounding box (rounded outward), minus those an exact test
-  // separates from H (by a facet plane of H, or by their own plane).
+  // candidates are the triangles meeting H's bounding box (rounded outward), minus those the interval filter
+  // proves disjoint from conv(H) (events/eee_occluder_filter.hpp).
   auto swept_part = [&](int k, Vec3<Exact>* lo, Vec3<Exact>* hi) {
     *lo = A[k];
     *hi = B[k];
@@ -321,31 +322,11 @@ std::optional<EeeEvent> eee_event(const Scene& scene, const SceneAdjacency& adj,
       box.hi = {std::max(box.hi.x, up(p.x)), std::max(box.hi.y, up(p.y)), std::max(box.hi.z, up(p.z))};
     }
   }
-  struct Facet {
-    int a, b, c;
-    Sign outside;
-  };
   // Normal of plane(P(t), l2) (a VEE line through a point W has W in it).
   const PVec plane_p_l2 = cross(pconst(f.D[1]), f.P - pconst(A[1]));
-  std::vector<Facet> facets;
-  // Facet planes of conv(H): planes through three non-collinear points of H with all of H on one closed side
-  // (computed only when there are many candidates: they cost ~100 exact orientation tests).
-  auto compute_facets = [&]() {
-    for (int a = 0; a < 6; ++a)
-      for (int b2 = a + 1; b2 < 6; ++b2)
-        for (int c2 = b2 + 1; c2 < 6; ++c2) {
-          if (collinear(H[a], H[b2], H[c2])) continue;
-          int pos = 0, neg = 0;
-          for (int d = 0; d < 6; ++d) {
-            const Sign sd = orient3d(H[a], H[b2], H[c2], H[d]);
-            pos += sd == Sign::Positive;
-            neg += sd == Sign::Negative;
-          }
-          if (pos > 0 && neg > 0) continue;
-          if (pos == 0 && neg == 0) continue;  // flat hull: no outside
-          facets.push_back({a, b2, c2, pos > 0 ? Sign::Negative : Sign::Positive});
-        }
-  };
+  // Occluders disjoint from conv(H) block nothing: proved by interval certificates (the filter), the others
+  // get the exact analysis below.
+  const EeeOccluderFilter hull_filter(H);
   // Large candidates first (a floating-point heuristic for the order only): every few occluders the free set
   // is recomputed; the search stops when it is empty and later occluders only look inside its hull.
   std::vector<std::pair<double, int>> cand;
@@ -357,7 +338,6 @@ std::optional<EeeEvent> eee_event(const Scene& scene, const SceneAdjacency& adj,
     cand.emplace_back(-dot(cr, cr), ti);
   }
   std::sort(cand.begin(), cand.end());
-  if (cand.size() > 8) compute_facets();
   int since_check = 0;
   for (const auto& [key, ti] : cand) {
     if (since_check >= 4) {
@@ -369,34 +349,11 @@ std::optional<EeeEvent> eee_event(const Scene& scene, const SceneAdjacency& adj,
       vmax = breakpoint_at(comps.back().t1, comps.back().end1);
     }
     const auto& tr = scene.triangles[ti];
+    if (hull_filter.separated(scene.corner(tr, 0), scene.corner(tr, 1), scene.corner(tr, 2))) continue;
     Occluder T{ti, tr.id, tr.v, {}};
     for (int k = 0; k < 3; ++k) T.c[k] = to_rational(scene.corner(tr, k));
     const Vec3<Exact> n = cross(T.c[1] - T.c[0], T.c[2] - T.c[0]);
     const Exact c = dot(n, T.c[0]);
-    // Exact separation from H (see above): all of T strictly outside one facet plane of H, or all of H
-    // strictly on one side of T's plane.
-    {
-      bool separated = false;
-      for (const Facet& fc : facets) {
-        separated = true;
-        for (int k = 0; k < 3 && separated; ++k)
-          separated = orient3d(H[fc.a], H[fc.b], H[fc.c], T.c[k]) == fc.outside;
-        if (separated) break;
-      }
-      if (!separated) {
-        int s0 = 0;
-        separated = true;
-        for (const auto& p : H) {
-          const int sp = CGAL::sign(dot(n, p) - c);
-          if (sp == 0 || (s0 != 0 && sp != s0)) {
-            separated = false;
-            break;
-          }
-          s0 = sp;
-        }
-      }
-      if (separated) continue;
-    }
     if (stats) ++stats->occluder_tests;
     std::vector<Breakpoint> b;
     b.push_back(vmin);

@@ -3,6 +3,7 @@
 #include "io/atomic_file.hpp"
 #include "io/headless_display.hpp"
 #include "io/render_png.hpp"
+#include "io/render_scene_png.hpp"
 #include "io/vtk_quiet.hpp"
 
 #include <vtkActor.h>
@@ -22,26 +23,6 @@
 
 namespace exactvis {
 
-namespace {
-
-// A well-spread palette: hues by the golden angle, alternating lightness.
-std::array<unsigned char, 3> colour(std::int64_t v) {
-  if (v < 0) return {170, 170, 170};
-  const double h = std::fmod(v * 0.618033988749895, 1.0) * 6, l = v % 2 ? 0.55 : 0.75, s = 0.65;
-  const double c = (1 - std::abs(2 * l - 1)) * s, x = c * (1 - std::abs(std::fmod(h, 2) - 1)), m = l - c / 2;
-  double r = 0, g = 0, b = 0;
-  const int k = static_cast<int>(h);
-  if (k == 0) r = c, g = x;
-  else if (k == 1) r = x, g = c;
-  else if (k == 2) g = c, b = x;
-  else if (k == 3) g = x, b = c;
-  else if (k == 4) r = x, b = c;
-  else r = c, b = x;
-  return {static_cast<unsigned char>(255 * (r + m)), static_cast<unsigned char>(255 * (g + m)),
-          static_cast<unsigned char>(255 * (b + m))};
-}
-
-}  // namespace
 
 void render_panels_png(const std::string& path, const std::vector<PngPanel>& panels, int panel_pixels) {
   if (panels.empty()) throw OutputError(path + ": nothing to render");
@@ -64,7 +45,7 @@ void render_panels_png(const std::string& path, const std::vector<PngPanel>& pan
       for (std::size_t t = 0; t < p.triangles.size(); ++t) {
         const vtkIdType ids[3] = {p.triangles[t][0], p.triangles[t][1], p.triangles[t][2]};
         polys->InsertNextCell(3, ids);
-        const auto c = colour(t < p.values.size() ? p.values[t] : -1);
+        const Rgb c = palette_colour(t < p.values.size() ? p.values[t] : -1);
         rgb->InsertNextTypedTuple(c.data());
       }
       vtkNew<vtkPolyData> surface;

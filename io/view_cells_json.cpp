@@ -11,14 +11,18 @@
 namespace exactvis {
 
 std::vector<region::RationalBox3> read_view_cells(const std::string& path) {
-  auto fail = [&](const std::string& problem) { return InputError(path + ": " + problem); };
   std::ifstream in(path);
-  if (!in) throw fail("cannot open the cells file");
+  if (!in) throw InputError(path + ": cannot open the cells file");
   std::stringstream text;
   text << in.rdbuf();
+  return view_cells_from_json_text(text.str(), path);
+}
+
+std::vector<region::RationalBox3> view_cells_from_json_text(const std::string& text, const std::string& name) {
+  auto fail = [&](const std::string& problem) { return InputError(name + ": " + problem); };
   nlohmann::json j;
   try {
-    j = nlohmann::json::parse(text.str());
+    j = nlohmann::json::parse(text);
   } catch (const nlohmann::json::exception&) {
     throw fail("not valid JSON (expected {\"cells\": [[x0,y0,z0,x1,y1,z1], ...]})");
   }

@@ -15,4 +15,7 @@ namespace exactvis {
 // cells at all.
 std::vector<region::RationalBox3> read_view_cells(const std::string& path);
 
+// The same for the file's text, named `name` in the messages ("NAME: problem"; the file's path above).
+std::vector<region::RationalBox3> view_cells_from_json_text(const std::string& text, const std::string& name);
+
 }  // namespace exactvis

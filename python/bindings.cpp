@@ -4,11 +4,15 @@
 // "error: ". Long calls release the GIL; progress callbacks are called with the GIL held.
 #include "api/complex2d.hpp"
 #include "api/events.hpp"
+#include "api/pvs.hpp"
+#include "api/shadows.hpp"
+#include "api/skeleton.hpp"
 #include "api/version.hpp"
 #include "api/visible.hpp"
 #include "apps/cli_util.hpp"
 #include "io/load_scene.hpp"
 #include "io/scene2d_json.hpp"
+#include "io/view_cells_json.hpp"
 #include "util/progress_observer.hpp"
 
 #include <pybind11/functional.h>
@@ -19,6 +23,7 @@
 #include <mpfr.h>
 
 #include <mutex>
+#include <set>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -212,6 +217,117 @@ std::string run_events(Scene scene, const std::string& kinds, std::optional<std:
   return text;
 }
 
+// pvs: the JSON text of `exactvis pvs --json`. The cells: `cells_json` (the text of a cells file, named
+// "cells" in messages), a cells file `cells_file`, or `grid` ("NX,NY,NZ") with an optional `box` (the
+// --box text); exactly one of cells_json, cells_file and grid.
+std::string run_pvs(const Scene& scene, py::object scene_label, std::optional<std::string> cells_json,
+                    std::optional<std::string> cells_file, std::optional<std::string> grid,
+                    std::optional<std::string> box, const std::string& method, int samples, std::int64_t rays,
+                    const std::string& seed, int threads, bool witnesses, bool hierarchy, py::object progress) {
+  if (static_cast<int>(cells_json.has_value()) + cells_file.has_value() + grid.has_value() != 1)
+    throw std::invalid_argument("give exactly one of --grid and --cells");
+  if (box && !grid) throw std::invalid_argument("--box: only with --grid");
+  api::PvsRequest request;
+  try {
+    request.method = region::parse_pvs_method(method);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(std::string("--method: ") + e.what());
+  }
+  if (samples < 0) throw std::invalid_argument("--samples must be >= 0");
+  if (rays < -1) throw std::invalid_argument("--rays must be >= 0");
+  region::PvsOptions& po = request.options;
+  po.query.samples = samples;
+  po.query.seed = app::parse_uint64(seed, "--seed");
+  po.hierarchy = hierarchy;
+  if (request.method == region::PvsMethod::sampled) po.cell_rays = rays >= 0 ? rays : 100000;
+  else if (rays > 1000000) throw std::invalid_argument("--rays: at most 1000000 rays per triangle");
+  else po.rays = rays >= 0 ? static_cast<int>(rays) : 8;
+  po.threads = app::check_thread_count(threads, "--threads");
+  if (grid) {
+    const std::array<long, 3> n = app::parse_grid(*grid);
+    std::optional<region::RationalBox3> b;
+    if (box) b = app::parse_box(*box, "--box");
+    request.cells = api::grid_view_cells(scene, n, b);
+  } else if (cells_file) {
+    request.cells = read_view_cells(*cells_file);
+  } else {
+    request.cells = view_cells_from_json_text(*cells_json, "cells");
+  }
+  const nlohmann::ordered_json label = scene_label.is_none() ? nlohmann::ordered_json(nullptr)
+                                                             : nlohmann::ordered_json::parse(py::str(scene_label).cast<std::string>());
+  PythonProgress report(progress);
+  if (report.active()) request.progress = [&report](std::int64_t d, std::int64_t t) { report(d, t); };
+  std::string text;
+  {
+    py::gil_scoped_release release;
+    text = api::pvs_json(scene, api::pvs(scene, request), label, witnesses).dump();
+  }
+  report.rethrow();
+  return text;
+}
+
+// skeleton: the JSON text of `exactvis skeleton --json` (of the pair's slice with `pair` "A,B").
+std::string run_skeleton(const Scene& scene, std::optional<std::string> pair, py::object progress) {
+  api::SkeletonRequest request;
+  if (pair) request.pair = api::parse_skeleton_pair(scene, *pair);
+  PythonProgress report(progress);
+  BarsToPython observer(report);
+  std::string text;
+  {
+    py::gil_scoped_release release;
+    std::unique_lock<std::mutex> lock(observed_call_mutex, std::defer_lock);
+    if (report.active()) {
+      lock.lock();
+      set_progress_observer(&observer);
+    }
+    try {
+      text = api::skeleton_json(scene, api::skeleton(scene, request)).dump();
+    } catch (...) {
+      if (report.active()) set_progress_observer(nullptr);
+      throw;
+    }
+    if (report.active()) set_progress_observer(nullptr);
+  }
+  report.rethrow();
+  return text;
+}
+
+// shadows: the JSON text of `exactvis shadows --json`; `lights` as repeated --light SPEC, `receivers` as
+// --receivers (the scene is a copy: a polygon light is appended to it).
+std::string run_shadows(Scene scene, const std::string& scene_name, const std::vector<std::string>& lights,
+                        const std::string& receivers, py::object progress) {
+  if (lights.empty()) throw std::invalid_argument("--light is required");
+  shadows::ShadowOptions options;
+  std::set<int> light;
+  for (const auto& spec : lights)
+    for (int t : app::parse_light(scene, spec).triangles)
+      if (light.insert(t).second) options.light.push_back(t);
+  options.receivers = api::parse_receivers(scene, receivers, options.light);
+  if (options.receivers.empty() && light.size() == scene.triangles.size())
+    throw std::invalid_argument(scene_name + ": no receiver triangles (every triangle is part of the light)");
+  options.vertex_irradiance = false;  // only the mesh files need it
+  PythonProgress report(progress);
+  BarsToPython observer(report);
+  std::string text;
+  {
+    py::gil_scoped_release release;
+    std::unique_lock<std::mutex> lock(observed_call_mutex, std::defer_lock);
+    if (report.active()) {
+      lock.lock();
+      set_progress_observer(&observer);
+    }
+    try {
+      text = api::shadows_json(scene, api::shadows(scene, options), options.light).dump();
+    } catch (...) {
+      if (report.active()) set_progress_observer(nullptr);
+      throw;
+    }
+    if (report.active()) set_progress_observer(nullptr);
+  }
+  report.rethrow();
+  return text;
+}
+
 // The 2D complex's progress: a plain function pointer, so one Python callback at a time per process.
 std::mutex complex2d_mutex;
 PythonProgress* complex2d_progress = nullptr;
@@ -295,6 +411,12 @@ PYBIND11_MODULE(_exactvis, m) {
   m.def("_visible", &run_visible, py::arg("scene"), py::arg("cell"), py::arg("polygon"), py::arg("triangles"),
         py::arg("samples"), py::arg("seed"), py::arg("threads"), py::arg("exact"), py::arg("progress"));
   m.def("_events", &run_events, py::arg("scene"), py::arg("kinds"), py::arg("light"), py::arg("split"),
+        py::arg("progress"));
+  m.def("_pvs", &run_pvs, py::arg("scene"), py::arg("scene_label"), py::arg("cells_json"), py::arg("cells_file"),
+        py::arg("grid"), py::arg("box"), py::arg("method"), py::arg("samples"), py::arg("rays"), py::arg("seed"),
+        py::arg("threads"), py::arg("witnesses"), py::arg("hierarchy"), py::arg("progress"));
+  m.def("_skeleton", &run_skeleton, py::arg("scene"), py::arg("pair"), py::arg("progress"));
+  m.def("_shadows", &run_shadows, py::arg("scene"), py::arg("scene_name"), py::arg("lights"), py::arg("receivers"),
         py::arg("progress"));
   m.def("_complex2d", &run_complex2d, py::arg("json_text"), py::arg("name"), py::arg("slice"), py::arg("progress"));
 }

@@ -13,6 +13,11 @@ PvsContext::PvsContext(const Scene& scene)
   diagonal_ = std::sqrt(dx * dx + dy * dy + dz * dz);
 }
 
+const ExtrudedScene& PvsContext::extruded() const {
+  std::call_once(lazy_->once, [&] { lazy_->extruded = detect_extruded_scene(scene_); });
+  return lazy_->extruded;
+}
+
 std::vector<std::string> visible_objects(const Scene& scene, const CellPvs& pvs) {
   std::vector<char> seen(scene.objects.size(), 0);
   for (const auto& v : pvs.visible) seen[scene.triangles[v.index].object] = 1;

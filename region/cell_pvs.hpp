@@ -10,12 +10,15 @@
 #include "kernel/scene.hpp"
 #include "kernel/triangle_index.hpp"
 #include "region/convex_polygon_3.hpp"
+#include "region/extruded_scene.hpp"
 #include "region/triangle_bvh.hpp"
 #include "region/visibility_options.hpp"
 #include "region/witness.hpp"
 
 #include <cstdint>
 #include <functional>
+#include <memory>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <vector>
@@ -33,6 +36,9 @@ class PvsContext {
   const FloatRayCaster& rays() const { return rays_; }
   const TriangleBvh& bvh() const { return bvh_; }
   double diagonal() const { return diagonal_; }  // length of the scene's bounding box diagonal
+  // The 2.5D verdict and wall rectangles of method `conservative` (region/extruded_scene.hpp), computed on
+  // first use (thread-safe; O(n log n)), so the other methods do not pay for it.
+  const ExtrudedScene& extruded() const;
 
  private:
   const Scene& scene_;
@@ -40,6 +46,11 @@ class PvsContext {
   FloatRayCaster rays_;
   TriangleBvh bvh_;
   double diagonal_ = 0;
+  struct Lazy {
+    std::once_flag once;
+    ExtrudedScene extruded;
+  };
+  std::unique_ptr<Lazy> lazy_ = std::make_unique<Lazy>();
 };
 
 struct PvsOptions {

@@ -22,6 +22,22 @@ inline mpz_class dot(const IntVec6& a, const IntVec6& b) {
   return s;
 }
 
+// Double approximations of the components (docs/theory.md §5.3, "Float filter of the cone signs"): each
+// component truncated toward zero (mpz_get_d: relative error below 2^-52), +infinity for a component of more
+// than 1000 bits (the filter then falls through to the exact layer). They only propose: every sign below is
+// certified by an error bound or recomputed exactly.
+using Approx6 = std::array<double, 6>;
+Approx6 approximate(const IntVec6& v);
+
+// Exact signs (-1, 0, +1) of a . b, side6(a, b) and plucker_form(a), given the vectors and their
+// approximations (approximate(a), approximate(b)): a semi-static filter (the sum of products in doubles,
+// certified when |sum| > 2^-49 * sum of |products|), the exact GMP evaluation when it cannot decide or when
+// kernel/filtered_predicate's filter is disabled. Counted as the predicates "cone_dot", "cone_side" and
+// "cone_plucker_form" (kernel/predicate_counters.hpp). Cost: a few flops; malloc-free unless exact.
+int dot_sign(const IntVec6& a, const Approx6& aa, const IntVec6& b, const Approx6& bb);
+int side_sign(const IntVec6& a, const Approx6& aa, const IntVec6& b, const Approx6& bb);
+int plucker_form_sign(const IntVec6& a, const Approx6& aa);
+
 // Divide by the gcd of the components (keeps direction; the zero vector is left as is).
 void normalize(IntVec6& v);
 bool is_zero(const IntVec6& v);

@@ -62,7 +62,7 @@ class PairQuery {
         ++stats_.effective_occluders;
       }
       std::vector<Piece> outside;
-      split(piece.cone, piece.test, occluders_[j], 0, false, false, outside);
+      split(std::move(piece.cone), std::move(piece.test), occluders_[j], 0, false, false, outside);
       for (auto& p : outside) {
         p.next = j + 1;
         stack.push_back(std::move(p));
@@ -82,8 +82,8 @@ class PairQuery {
   // Could some line of the cone meet the occluder (all edge sides >= 0, or all <= 0)?
   bool touches(const PolyhedralCone6& cone, const ShaftOccluder& occ) const {
     bool plus = true, minus = true;
-    for (const auto& w : occ.edges) {
-      const HalfspaceRelation r = relation_to_halfspace(cone, w);
+    for (std::size_t k = 0; k < occ.edges.size(); ++k) {
+      const HalfspaceRelation r = relation_to_halfspace(cone, occ.edges[k], occ.edges_approx[k]);
       if (r == HalfspaceRelation::Outside) plus = false;
       if (r == HalfspaceRelation::Inside) minus = false;
       if (!plus && !minus) return false;
@@ -92,28 +92,32 @@ class PairQuery {
   }
 
   // Pieces of cone minus the occluder's line set: lines that pass the edges with mixed signs.
-  void split(const PolyhedralCone6& cone, const RealLineTest& t, const ShaftOccluder& occ, std::size_t k, bool pos,
+  // cone and t are taken by value and moved along: a surviving piece is never copied.
+  void split(PolyhedralCone6 cone, RealLineTest t, const ShaftOccluder& occ, std::size_t k, bool pos,
              bool neg, std::vector<Piece>& out) {
     if (pos && neg) {
-      out.push_back(Piece{cone, t, 0});
+      out.push_back(Piece{std::move(cone), std::move(t), 0});
       return;
     }
     if (k == occ.edges.size()) return;  // every edge passed on one side: the lines hit the occluder
     const IntVec6& w = occ.edges[k];
-    const HalfspaceRelation r = relation_to_halfspace(cone, w);
-    if (r == HalfspaceRelation::Inside) return split(cone, t, occ, k + 1, true, neg, out);
-    if (r == HalfspaceRelation::Outside) return split(cone, t, occ, k + 1, pos, true, out);
+    const HalfspaceRelation r = relation_to_halfspace(cone, w, occ.edges_approx[k]);
+    if (r == HalfspaceRelation::Inside) return split(std::move(cone), std::move(t), occ, k + 1, true, neg, out);
+    if (r == HalfspaceRelation::Outside) return split(std::move(cone), std::move(t), occ, k + 1, pos, true, out);
     for (int s : {+1, -1}) {
       IntVec6 ws = w;
-      if (s < 0)
+      Approx6 wa = occ.edges_approx[k];
+      if (s < 0) {
         for (auto& c : ws) c = -c;
+        for (auto& c : wa) c = -c;
+      }
       ++stats_.splits;
-      auto part = intersect_open_halfspace(cone, ws);
+      auto part = intersect_open_halfspace(cone, ws, wa);
       if (!part) continue;
       ++stats_.cones_created;
       RealLineTest pt = test(*part);
       if (!pt.has_real_lines) continue;
-      split(*part, pt, occ, k + 1, pos || s > 0, neg || s < 0, out);
+      split(std::move(*part), std::move(pt), occ, k + 1, pos || s > 0, neg || s < 0, out);
     }
   }
 

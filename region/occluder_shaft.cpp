@@ -72,8 +72,10 @@ std::optional<ShaftOccluder> clipped_occluder(const std::array<RationalPoint3, 3
   if (lies_in_plane(clipped, pair.source_plane) || lies_in_plane(clipped, pair.target_plane)) return std::nullopt;
   ShaftOccluder occ;
   occ.corners = tri;
-  for (std::size_t i = 0; i < clipped.size(); ++i)
+  for (std::size_t i = 0; i < clipped.size(); ++i) {
     occ.edges.push_back(side_functional(line_through(clipped[i], clipped[(i + 1) % clipped.size()])));
+    occ.edges_approx.push_back(approximate(occ.edges.back()));
+  }
   return occ;
 }
 

@@ -17,6 +17,7 @@ struct ShaftOccluder {
   std::array<RationalPoint3, 3> corners;
   std::array<Point3, 3> corners_d;  // the same corners as input doubles
   std::vector<IntVec6> edges;  // functionals of the clipped polygon's edges, in loop order
+  std::vector<Approx6> edges_approx;  // approximate(edges[i]) (the float filter of the CSG's signs)
   int blocked_samples = 0;     // sample segments it blocked (orders the CSG; set by the caller)
 };
 

@@ -10,16 +10,21 @@ PolyhedralCone6 whole_space_cone() {
     IntVec6 e;
     for (int j = 0; j < 6; ++j) e[j] = (i == j) ? 1 : 0;
     c.lineality.push_back(e);
+    c.lineality_approx.push_back(approximate(e));
   }
   return c;
 }
 
 HalfspaceRelation relation_to_halfspace(const PolyhedralCone6& cone, const IntVec6& w) {
-  for (const auto& b : cone.lineality)
-    if (sgn(dot(w, b)) != 0) return HalfspaceRelation::Crossing;
+  return relation_to_halfspace(cone, w, approximate(w));
+}
+
+HalfspaceRelation relation_to_halfspace(const PolyhedralCone6& cone, const IntVec6& w, const Approx6& wa) {
+  for (std::size_t j = 0; j < cone.lineality.size(); ++j)
+    if (dot_sign(w, wa, cone.lineality[j], cone.lineality_approx[j]) != 0) return HalfspaceRelation::Crossing;
   bool pos = false, neg = false;
-  for (const auto& r : cone.rays) {
-    const int s = sgn(dot(w, r));
+  for (std::size_t r = 0; r < cone.rays.size(); ++r) {
+    const int s = dot_sign(w, wa, cone.rays[r], cone.rays_approx[r]);
     pos |= s > 0;
     neg |= s < 0;
     if (pos && neg) return HalfspaceRelation::Crossing;
@@ -58,6 +63,11 @@ void drop_redundant_constraints(PolyhedralCone6& cone) {
 }  // namespace
 
 std::optional<PolyhedralCone6> intersect_open_halfspace(const PolyhedralCone6& cone, const IntVec6& w) {
+  return intersect_open_halfspace(cone, w, approximate(w));
+}
+
+std::optional<PolyhedralCone6> intersect_open_halfspace(const PolyhedralCone6& cone, const IntVec6& w,
+                                                        const Approx6& wa) {
   const std::size_t n_old = cone.constraints.size();
   PolyhedralCone6 out;
   out.constraints = cone.constraints;
@@ -71,15 +81,13 @@ std::optional<PolyhedralCone6> intersect_open_halfspace(const PolyhedralCone6& c
 
   // Case 1: the hyperplane cuts the lineality space: one lineality direction becomes a ray.
   std::size_t pivot = cone.lineality.size();
-  mpz_class wb;
-  for (std::size_t j = 0; j < cone.lineality.size(); ++j) {
-    wb = dot(w, cone.lineality[j]);
-    if (sgn(wb) != 0) {
+  for (std::size_t j = 0; j < cone.lineality.size(); ++j)
+    if (dot_sign(w, wa, cone.lineality[j], cone.lineality_approx[j]) != 0) {
       pivot = j;
       break;
     }
-  }
   if (pivot < cone.lineality.size()) {
+    mpz_class wb = dot(w, cone.lineality[pivot]);
     IntVec6 b = cone.lineality[pivot];
     if (sgn(wb) < 0) {
       for (auto& c : b) c = -c;
@@ -91,16 +99,19 @@ std::optional<PolyhedralCone6> intersect_open_halfspace(const PolyhedralCone6& c
       IntVec6 v;
       for (int k = 0; k < 6; ++k) v[k] = wb * cone.lineality[j][k] - wj * b[k];
       normalize(v);
-      out.lineality.push_back(v);
+      out.lineality_approx.push_back(approximate(v));
+      out.lineality.push_back(std::move(v));
     }
     for (std::size_t r = 0; r < cone.rays.size(); ++r) {
       const mpz_class wr = dot(w, cone.rays[r]);
       IntVec6 v;
       for (int k = 0; k < 6; ++k) v[k] = wb * cone.rays[r][k] - wr * b[k];
       normalize(v);
-      out.rays.push_back(v);
+      out.rays_approx.push_back(approximate(v));
+      out.rays.push_back(std::move(v));
       out.incidence.push_back(widen(cone.incidence[r], true));
     }
+    out.rays_approx.push_back(approximate(b));
     out.rays.push_back(b);
     boost::dynamic_bitset<> inc(n_old + 1);
     inc.set();
@@ -112,11 +123,9 @@ std::optional<PolyhedralCone6> intersect_open_halfspace(const PolyhedralCone6& c
 
   // Case 2: classify the rays.
   std::vector<int> sign(cone.rays.size());
-  std::vector<mpz_class> value(cone.rays.size());
   bool any_pos = false, any_neg = false;
   for (std::size_t r = 0; r < cone.rays.size(); ++r) {
-    value[r] = dot(w, cone.rays[r]);
-    sign[r] = sgn(value[r]);
+    sign[r] = dot_sign(w, wa, cone.rays[r], cone.rays_approx[r]);
     any_pos |= sign[r] > 0;
     any_neg |= sign[r] < 0;
   }
@@ -124,10 +133,18 @@ std::optional<PolyhedralCone6> intersect_open_halfspace(const PolyhedralCone6& c
   if (!any_neg) return cone;          // already inside: nothing changes (w would be redundant)
 
   out.lineality = cone.lineality;
+  out.lineality_approx = cone.lineality_approx;
+  // Exact values w . r, only for the rays that are combined.
+  std::vector<std::optional<mpz_class>> value(cone.rays.size());
+  auto value_of = [&](std::size_t r) -> const mpz_class& {
+    if (!value[r]) value[r] = dot(w, cone.rays[r]);
+    return *value[r];
+  };
   const std::size_t dim = 6 - cone.lineality.size();
   for (std::size_t r = 0; r < cone.rays.size(); ++r) {
     if (sign[r] < 0) continue;
     out.rays.push_back(cone.rays[r]);
+    out.rays_approx.push_back(cone.rays_approx[r]);
     out.incidence.push_back(widen(cone.incidence[r], sign[r] == 0));
   }
   for (std::size_t p = 0; p < cone.rays.size(); ++p) {
@@ -141,9 +158,11 @@ std::optional<PolyhedralCone6> intersect_open_halfspace(const PolyhedralCone6& c
         if (r != p && r != q && common.is_subset_of(cone.incidence[r])) adjacent = false;
       if (!adjacent) continue;
       IntVec6 v;
-      for (int k = 0; k < 6; ++k) v[k] = value[p] * cone.rays[q][k] - value[q] * cone.rays[p][k];
+      const mpz_class &vp = value_of(p), &vq = value_of(q);
+      for (int k = 0; k < 6; ++k) v[k] = vp * cone.rays[q][k] - vq * cone.rays[p][k];
       normalize(v);
-      out.rays.push_back(v);
+      out.rays_approx.push_back(approximate(v));
+      out.rays.push_back(std::move(v));
       out.incidence.push_back(widen(common, true));
     }
   }

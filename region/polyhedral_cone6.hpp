@@ -23,6 +23,9 @@ struct PolyhedralCone6 {
   std::vector<IntVec6> rays;
   std::vector<boost::dynamic_bitset<>> incidence;  // incidence[r][i] <=> constraints[i] . rays[r] == 0
   std::vector<IntVec6> lineality;                  // basis; every constraint vanishes on it
+  // approximate() of each ray and lineality vector, index for index (the float filter of the signs below).
+  std::vector<Approx6> rays_approx;
+  std::vector<Approx6> lineality_approx;
 };
 
 // R^6 itself (no constraint; lineality = the unit vectors).
@@ -35,10 +38,15 @@ enum class HalfspaceRelation {
 };
 
 // Where the closure of K lies with respect to the hyperplane w . x = 0.
+// w_approx = approximate(w) (the overload without it computes it). Exact (filtered signs of w . r).
 HalfspaceRelation relation_to_halfspace(const PolyhedralCone6& cone, const IntVec6& w);
+HalfspaceRelation relation_to_halfspace(const PolyhedralCone6& cone, const IntVec6& w, const Approx6& w_approx);
 
-// K intersected with the open halfspace {w . x > 0}; std::nullopt when that is empty.
+// K intersected with the open halfspace {w . x > 0}; std::nullopt when that is empty. The ray signs are
+// filtered; the exact values w . r are computed only for the rays that are combined into new ones.
 std::optional<PolyhedralCone6> intersect_open_halfspace(const PolyhedralCone6& cone, const IntVec6& w);
+std::optional<PolyhedralCone6> intersect_open_halfspace(const PolyhedralCone6& cone, const IntVec6& w,
+                                                        const Approx6& w_approx);
 
 // An interior point of K (sum of the rays; lineality adds nothing needed). Requires rays non-empty or
 // lineality == whole space.

@@ -1,5 +1,6 @@
 #include "region/pvs_method.hpp"
 
+#include "region/conservative_pvs.hpp"
 #include "region/exact_pvs.hpp"
 #include "region/sampled_pvs.hpp"
 
@@ -8,13 +9,14 @@
 namespace exactvis::region {
 
 const std::vector<std::string>& pvs_method_names() {
-  static const std::vector<std::string> names{"exact", "sampled"};
+  static const std::vector<std::string> names{"exact", "sampled", "conservative"};
   return names;
 }
 
 PvsMethod parse_pvs_method(const std::string& name) {
   if (name == "exact") return PvsMethod::exact;
   if (name == "sampled") return PvsMethod::sampled;
+  if (name == "conservative") return PvsMethod::conservative;
   std::string known;
   for (const auto& n : pvs_method_names()) known += (known.empty() ? "" : ", ") + n;
   throw std::invalid_argument("unknown PVS method '" + name + "' (known: " + known + ")");
@@ -24,6 +26,7 @@ std::string pvs_method_name(PvsMethod method) {
   switch (method) {
     case PvsMethod::exact: return "exact";
     case PvsMethod::sampled: return "sampled";
+    case PvsMethod::conservative: return "conservative";
   }
   return "?";
 }
@@ -33,6 +36,7 @@ CellPvs compute_cell_pvs(PvsMethod method, const PvsContext& context, const Rati
   switch (method) {
     case PvsMethod::exact: return exact_cell_pvs(context, cell, options);
     case PvsMethod::sampled: return sampled_cell_pvs(context, cell, options);
+    case PvsMethod::conservative: return conservative_cell_pvs(context, cell, options);
   }
   throw std::logic_error("compute_cell_pvs: unhandled method");
 }

@@ -11,9 +11,10 @@ namespace exactvis::region {
 enum class PvsMethod {
   exact,    // region/exact_pvs.hpp: every triangle decided exactly, witnesses checked exactly
   sampled,  // region/sampled_pvs.hpp: random rays per cell, each hit confirmed exactly (aggressive)
+  conservative,  // region/conservative_pvs.hpp: only triangles proved hidden are left out (overestimates)
 };
 
-// The method names --method accepts, in order ("exact", "sampled").
+// The method names --method accepts, in order ("exact", "sampled", "conservative").
 const std::vector<std::string>& pvs_method_names();
 // The method called `name`; throws std::invalid_argument ("unknown PVS method 'NAME' (known: ...)").
 PvsMethod parse_pvs_method(const std::string& name);

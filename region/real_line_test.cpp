@@ -72,8 +72,10 @@ struct SignSearch {
   bool have_pos = false, have_neg = false;
   IntVec6 pos{}, neg{};
   bool done() const { return have_pos && have_neg; }
-  void offer(const IntVec6& x) {
-    const int s = sgn(plucker_form(x));
+  void offer(const IntVec6& x) { offer(x, approximate(x)); }
+  void offer(const IntVec6& x, const Approx6& xa) {
+    if (done()) return;
+    const int s = plucker_form_sign(x, xa);
     if (s > 0 && !have_pos) {
       have_pos = true;
       pos = x;
@@ -85,12 +87,16 @@ struct SignSearch {
 };
 
 // A point a*ri + b*rj (a, b >= 0) where q has sign `want` (+1/-1), if the 2D cone has one.
-std::optional<IntVec6> pair_point(const IntVec6& ri, const IntVec6& rj, int want) {
-  const mpz_class qi = want * plucker_form(ri), qj = want * plucker_form(rj), s = want * side6(ri, rj);
+// The signs are filtered first (ri, rj with their approximations); exact values only for a combination.
+std::optional<IntVec6> pair_point(const IntVec6& ri, const Approx6& ria, const IntVec6& rj, const Approx6& rja,
+                                  int want) {
   // want*q(a ri + b rj) = a^2 qi + a b s + b^2 qj ; look for a value > 0.
-  if (sgn(qi) > 0) return ri;
-  if (sgn(qj) > 0) return rj;
-  if (sgn(s) <= 0) return std::nullopt;
+  const int sqi = want * plucker_form_sign(ri, ria);
+  if (sqi > 0) return ri;
+  const int sqj = want * plucker_form_sign(rj, rja);
+  if (sqj > 0) return rj;
+  if (want * side_sign(ri, ria, rj, rja) <= 0) return std::nullopt;
+  const mpz_class qi = want * plucker_form(ri), qj = want * plucker_form(rj), s = want * side6(ri, rj);
   if (sgn(qi) == 0) {  // a = 1, b large: b s + b^2 qj > 0 for b = 1 + floor(-qj... ) pick b with b (s + b qj) > 0
     if (sgn(qj) == 0) return combine(1, ri, 1, rj);
     // qj < 0: b = s / (2 |qj|) makes s + b qj = s/2 > 0
@@ -164,16 +170,18 @@ RealLineTest test_real_lines(const PolyhedralCone6& cone) {
   }
 
   // (2) Signs at the rays.
-  for (const auto& r : cone.rays) search.offer(r);
+  for (std::size_t r = 0; r < cone.rays.size(); ++r) search.offer(cone.rays[r], cone.rays_approx[r]);
   if (search.done()) return finish(2);
 
   // (3) Two-dimensional faces spanned by ray pairs (sufficient, cheap).
   for (std::size_t i = 0; i < cone.rays.size() && !search.done(); ++i)
     for (std::size_t j = i + 1; j < cone.rays.size() && !search.done(); ++j) {
       if (!search.have_pos)
-        if (auto p = pair_point(cone.rays[i], cone.rays[j], +1)) search.offer(*p);
+        if (auto p = pair_point(cone.rays[i], cone.rays_approx[i], cone.rays[j], cone.rays_approx[j], +1))
+          search.offer(*p);
       if (!search.have_neg)
-        if (auto p = pair_point(cone.rays[i], cone.rays[j], -1)) search.offer(*p);
+        if (auto p = pair_point(cone.rays[i], cone.rays_approx[i], cone.rays[j], cone.rays_approx[j], -1))
+          search.offer(*p);
     }
   if (search.done()) return finish(3);
   // If q >= 0 at all rays and S(ri, rj) >= 0 for all pairs, q >= 0 on the cone: no negative point exists.
@@ -183,7 +191,8 @@ RealLineTest test_real_lines(const PolyhedralCone6& cone) {
   for (std::size_t i = 0; i < cone.rays.size() && pairs_conclusive; ++i)
     for (std::size_t j = i + 1; j < cone.rays.size() && pairs_conclusive; ++j) {
       const int want = search.have_pos ? -1 : +1;
-      if (sgn(want * side6(cone.rays[i], cone.rays[j])) > 0) pairs_conclusive = false;
+      if (want * side_sign(cone.rays[i], cone.rays_approx[i], cone.rays[j], cone.rays_approx[j]) > 0)
+        pairs_conclusive = false;
     }
   if (pairs_conclusive) return finish(3);
 

@@ -25,6 +25,9 @@ if "$tmp/examples/visible_from_cell" "$town" 6 6 1 7 7 >/dev/null 2>&1; then exi
 "$tmp/examples/visible_from_cell" "$town" 6 6 1 7 7 2 | tail -n 1 | grep -E '^[0-9]+ of 200 triangles visible$'
 "$tmp/examples/visual_events" "$small" | grep '^counts {"EEE":null,"EV":[0-9]*}$'
 "$tmp/examples/complex_2d" | grep -E '^[0-9]+ free bitangents, [0-9]+ edges, [0-9]+ faces$'
+"$tmp/examples/pvs_grid" "$town" 1 1 1 | grep -E '^cell 0: [0-9]+ of 200 triangles visible$'
+"$tmp/examples/skeleton_counts" "$root/scenes/lamp_room.obj" floor ceiling | tail -n 1 | grep '^counts {"nodes":{"VV":[1-9]'
+"$tmp/examples/shadow_mesh" "$root/scenes/lamp_room.obj" lamp | tail -n 1 | grep '^counts {"receivers":16,'
 
 # The Python package from the prefix (when it was built).
 site="$(find "$prefix" -type d -name site-packages | head -n 1)"

@@ -5,6 +5,11 @@ The jobs of the ``exactvis`` command line, one call each (docs/python.md has a w
 - ``visible(V, F, cell=(x0, y0, z0, x1, y1, z1), triangles=None)`` -> ``(visible, witnesses)``: which
   triangles can be seen from a view cell (or ``source_polygon=``), with an exact witness segment each.
 - ``events(V, F, light=None, kinds="EV,EEE")`` -> dict, the JSON of ``exactvis events --json``.
+- ``pvs(V, F, cells=[(x0, y0, z0, x1, y1, z1), ...])`` or ``pvs(V, F, grid=(nx, ny, nz))`` -> dict, the JSON
+  of ``exactvis pvs --json``: per view cell the visible triangles and objects, with exact witnesses.
+- ``skeleton(V, F, pair=None)`` -> dict, the JSON of ``exactvis skeleton --json``.
+- ``shadows(V, F, light="lamp")`` -> dict, the JSON of ``exactvis shadows --json``: the exact
+  discontinuity mesh of area lights (umbra, penumbra, lit faces with backprojections and irradiance).
 - ``complex2d(polygons)`` -> dict, the JSON of ``exactvis complex2d --json``.
 - ``load_scene(path, ...)`` -> ``Scene`` (``.vertices``, ``.faces``, ``.ids``, ``.objects``, ``.object_names``).
 
@@ -32,7 +37,7 @@ from . import _exactvis
 from ._exactvis import Scene
 
 __version__ = _exactvis.__version__
-__all__ = ["Scene", "load_scene", "visible", "events", "complex2d", "fraction", "__version__"]
+__all__ = ["Scene", "load_scene", "visible", "events", "pvs", "skeleton", "shadows", "complex2d", "fraction", "__version__"]
 
 
 def fraction(x):
@@ -167,6 +172,119 @@ def events(V, F=None, *, light=None, kinds="EV,EEE", split=True, progress=None):
     if light is not None and not isinstance(light, str):
         light = ";".join(",".join(repr(float(c)) for c in p) for p in light)
     return _json.loads(_exactvis._events(scene, kinds, light, bool(split), progress))
+
+
+def _scene_label(V):
+    """The "scene" entry of a PVS document: the file name(s) as given, None for arrays or a Scene."""
+    if isinstance(V, (str, _os.PathLike)):
+        return _json.dumps(_os.fspath(V))
+    if isinstance(V, (list, tuple)) and V and all(isinstance(p, (str, _os.PathLike)) for p in V):
+        return _json.dumps(_os.fspath(V[0]) if len(V) == 1 else [_os.fspath(p) for p in V])
+    return None
+
+
+def _cells_json(cells):
+    rows = []
+    for c in cells:
+        if isinstance(c, _np.ndarray):
+            c = c.tolist()
+        if not isinstance(c, (list, tuple)):
+            raise ValueError(f"cells: cell {len(rows)} is not a list of 6 numbers [x0,y0,z0,x1,y1,z1]")
+        row = []
+        for x in c:
+            if isinstance(x, bool) or not isinstance(x, (_numbers.Real, str)):
+                row.append(repr(x))  # refused by the reader with its message
+            elif isinstance(x, (_numbers.Integral, _numbers.Rational)) or isinstance(x, str):
+                row.append(_exact_text(x, "cells"))
+            else:
+                row.append(float(x))
+        rows.append(row)
+    return _json.dumps({"cells": rows})
+
+
+def pvs(V, F=None, cells=None, *, grid=None, box=None, method="exact", witnesses=True, samples=48, rays=None,
+        seed=1, threads=0, hierarchy=True, progress=None):
+    """Exact potentially visible sets of view cells (``exactvis pvs``; docs/theory.md section 5).
+
+    - V, F: the scene (see the module doc).
+    - cells: a sequence of boxes (x0, y0, z0, x1, y1, z1) (floats, ints, Fractions or "num/den" strings, taken
+      exactly; x0 < x1, y0 < y1, z0 < z1), numbered in order; or the path of a cells file (``--cells``).
+      Or ``grid=(nx, ny, nz)``: a grid over the scene's bounding box, or over ``box=(x0, ..., z1)``.
+    - method: "exact" (default), "sampled" or "conservative" (``--method``); witnesses=False is
+      ``--no-witnesses``.
+    - samples, rays, seed, threads, hierarchy: ``--samples``, ``--rays`` (None: the method's default),
+      ``--seed``, ``--threads``, hierarchy=False is ``--no-hierarchy``.
+    - progress: called as progress(decided, total), total = cells x triangles.
+
+    Returns the dict of ``exactvis pvs --json`` on the same scene and cells: {"scene", "triangles", "cells":
+    [{"cell", "box", "visible": [ids], "objects": [names], "witnesses": {"id": [[p], [q]]}, "stats"}, ...],
+    "stats"}; "scene" is the file name (None for arrays). Coordinates are numbers when exactly doubles, else
+    "num/den" strings (``exactvis.fraction``). Releases the GIL while it runs.
+    """
+    scene = _scene(V, F)
+    given = (cells is not None) + (grid is not None)
+    if given != 1:
+        raise ValueError("give exactly one of --grid and --cells")
+    cells_json = cells_file = grid_text = box_text = None
+    if grid is not None:
+        grid_text = grid if isinstance(grid, str) else ",".join(str(int(n)) if isinstance(n, _numbers.Integral)
+                                                                 and not isinstance(n, bool) else str(n)
+                                                                 for n in grid)
+    elif isinstance(cells, (str, _os.PathLike)):
+        cells_file = _os.fspath(cells)
+    else:
+        cells_json = _cells_json(cells)
+    if box is not None:
+        box_text = box if isinstance(box, str) else ",".join(_exact_text(c, "--box") for c in box)
+    return _json.loads(_exactvis._pvs(scene, _scene_label(V), cells_json, cells_file, grid_text, box_text, str(method),
+                                      int(samples), -1 if rays is None else int(rays), str(seed), int(threads),
+                                      bool(witnesses), bool(hierarchy), progress))
+
+
+def skeleton(V, F=None, *, pair=None, progress=None):
+    """The 3D visibility skeleton (``exactvis skeleton``; docs/theory.md section 9).
+
+    - pair: None (the whole skeleton) or (A, B) / "A,B": only the nodes and arcs whose maximal free segments
+      end on objects A and B (object names, or triangle ids), built lazily (``--pair``).
+    - progress: called as progress(done, total) per stage of the enumerations (as for ``events``).
+
+    Returns the dict of ``exactvis skeleton --json`` on the same scene: {"counts", "nodes", "arcs"}, exact
+    coordinates as numbers, "num/den" or "a+b*sqrt(c)" strings. Releases the GIL while it runs.
+    """
+    scene = _scene(V, F)
+    if pair is not None and not isinstance(pair, str):
+        pair = ",".join(str(p) for p in pair)
+    return _json.loads(_exactvis._skeleton(scene, pair, progress))
+
+
+def _light_text(light):
+    if isinstance(light, str):
+        return light
+    return ";".join(",".join(repr(float(c)) for c in p) for p in light)
+
+
+def shadows(V, F=None, *, light, receivers="all", progress=None):
+    """The exact discontinuity mesh of area lights (``exactvis shadows``; docs/theory.md section 11).
+
+    - light: the name of a scene object, a polygon [(x, y, z), ...] (or the command line's text
+      "x,y,z;x,y,z;x,y,z") appended to the scene as object "light", or a list of those (several lights,
+      joined into one light of exitance 1, as repeated ``--light``).
+    - receivers: "all" (every triangle not part of a light) or a sequence of triangle ids (``--receivers``).
+    - progress: called as progress(done, total) per stage (events, receivers), as for ``events``.
+
+    Returns the dict of ``exactvis shadows --json`` on the same scene: {"receivers": [{"triangle", "curves",
+    "faces"}], "counts", "light", "stats"} (``stats`` holds timings in seconds, which differ between runs).
+    Exact values as numbers or "num/den" strings; areas, fractions and irradiance are floats. Releases the GIL.
+    """
+    scene = _scene(V, F)
+    if isinstance(light, str) or (light and not isinstance(light[0], str) and _np.ndim(light[0]) == 1):
+        lights = [_light_text(light)]
+    else:
+        lights = [_light_text(l) for l in light]
+    if not isinstance(receivers, str):
+        receivers = ",".join(str(int(t)) for t in _np.asarray(receivers).ravel())
+    name = _os.fspath(V) if isinstance(V, (str, _os.PathLike)) else "scene"
+    return _json.loads(_exactvis._shadows(scene, name, lights, receivers, progress))
 
 
 def _json_exact(x):

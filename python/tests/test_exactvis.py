@@ -331,3 +331,127 @@ def test_complex2d_bad_input_messages_as_cli(tmp_path):
 def test_version_matches_cli():
     status, out, _ = cli("--version")
     assert status == 0 and out.strip() == "exactvis " + exactvis.__version__
+
+
+# ---- pvs
+
+PVS_CELLS = [(0, 0, 0, 1, 1, 1), (-1, -1, 2.5, 2, 2, 2.75), (9, -1, -1, 9.5, 0.5, "1/3")]
+
+
+def test_pvs_matches_cli_json_and_witnesses_recheck(tmp_path, small_scene_file):
+    cells_path = tmp_path / "cells.json"
+    cells_path.write_text(json.dumps({"cells": [list(c) for c in PVS_CELLS]}))
+    j = cli_json("pvs", small_scene_file, "--cells", cells_path, "--json", "-q")
+    calls = []
+    got = exactvis.pvs(small_scene_file, cells=PVS_CELLS, progress=lambda d, t: calls.append((d, t)))
+    assert got == j
+    assert calls and calls[-1] == (3 * 4, 3 * 4) and all(0 <= d <= t == 12 for d, t in calls)
+    assert exactvis.pvs(small_scene_file, cells=str(cells_path), threads=1) == j
+    jc = cli_json("pvs", small_scene_file, "--cells", cells_path, "--method", "conservative", "--json", "-q")
+    assert exactvis.pvs(small_scene_file, cells=PVS_CELLS, method="conservative") == jc
+    # arrays: the same answers, "scene" null; every witness re-checked exactly (Fractions)
+    arr = exactvis.pvs(OCCLUDER_V, OCCLUDER_F, cells=PVS_CELLS)
+    assert arr["scene"] is None
+    for a, c in zip(arr["cells"], j["cells"]):  # object names of arrays are "arrays#componentK"
+        assert a["visible"] == c["visible"] and a["witnesses"] == c["witnesses"] and a["box"] == c["box"]
+    assert j["cells"][0]["visible"] == [0, 1, 3]  # the small triangle above the occluder is hidden
+    for c, cell in zip(j["cells"], PVS_CELLS):
+        assert sorted(int(t) for t in c["witnesses"]) == c["visible"]
+        for tid, w in c["witnesses"].items():
+            check_witness(OCCLUDER_V, OCCLUDER_F, int(tid), [exactvis.fraction(x) for x in cell], w)
+    # visible() on the same cell gives the same visible set
+    vis, _ = exactvis.visible(OCCLUDER_V, OCCLUDER_F, cell=PVS_CELLS[1])
+    assert np.flatnonzero(vis).tolist() == j["cells"][1]["visible"]
+
+
+def test_pvs_grid_options_match_cli(scene_file):
+    j = cli_json("pvs", scene_file, "--grid", "2,1,1", "--json", "--no-witnesses", "--rays", "0", "-q")
+    assert exactvis.pvs(scene_file, grid=(2, 1, 1), witnesses=False, rays=0) == j
+    assert all("witnesses" not in c for c in j["cells"])
+    box = "0,0,0,32,32,1/2"
+    jb = cli_json("pvs", scene_file, "--grid", "1,1,2", "--box", box, "--json", "--method", "sampled", "--rays",
+                  "300", "-q")
+    assert exactvis.pvs(scene_file, grid=(1, 1, 2), box=(0, 0, 0, 32, 32, Fraction(1, 2)), method="sampled",
+                        rays=300) == jb
+
+
+def test_pvs_bad_input_messages_as_cli(small_scene_file, tmp_path):
+    bad = tmp_path / "bad.json"
+    bad.write_text('{"cells": [[0, 0, 0, 1, 1, -1]]}')
+    cases = [(dict(cells=str(bad)), ["--cells", bad]),
+             (dict(grid=(0, 1, 1)), ["--grid", "0,1,1"]),
+             (dict(grid=(1, 1, 1), method="magic"), ["--grid", "1,1,1", "--method", "magic"]),
+             (dict(grid=(1, 1, 1), threads=5000), ["--grid", "1,1,1", "--threads", "5000"]),
+             (dict(grid=(1, 1, 1), seed=-3), ["--grid", "1,1,1", "--seed", "-3"])]
+    for kwargs, args in cases:
+        with pytest.raises(ValueError) as e:
+            exactvis.pvs(small_scene_file, **kwargs)
+        assert str(e.value) == cli_error("pvs", small_scene_file, *args, "-q")
+    with pytest.raises(ValueError, match=r"^cells: cell 0 is empty or inverted in z"):
+        exactvis.pvs(OCCLUDER_V, OCCLUDER_F, cells=[(0, 0, 0, 1, 1, -1)])
+    with pytest.raises(ValueError, match="exactly one of --grid and --cells"):
+        exactvis.pvs(OCCLUDER_V, OCCLUDER_F)
+
+
+# ---- skeleton
+
+def test_skeleton_matches_cli_json(small_scene_file):
+    j = cli_json("skeleton", small_scene_file, "--json", "-q")
+    calls = []
+    got = exactvis.skeleton(small_scene_file, progress=lambda d, t: calls.append((d, t)))
+    assert got == j and calls
+    assert j["counts"]["arcs"]["EV"] > 0 and len(j["nodes"]) > 0
+    assert exactvis.skeleton(OCCLUDER_V, OCCLUDER_F) == j  # ids are rows of F = the file's ids here
+    jp = cli_json("skeleton", small_scene_file, "--pair", "0,2", "--json", "-q")
+    assert exactvis.skeleton(small_scene_file, pair=(0, 2)) == jp
+    assert len(jp["arcs"]) < len(j["arcs"])
+
+
+def test_skeleton_bad_input_messages_as_cli(small_scene_file):
+    for pair in ["0,99", "0", "a,b,c"]:
+        with pytest.raises(ValueError) as e:
+            exactvis.skeleton(small_scene_file, pair=pair)
+        assert str(e.value) == cli_error("skeleton", small_scene_file, "--pair", pair, "-q")
+
+
+# ---- shadows
+
+def without_seconds(j):
+    j = dict(j)
+    j["stats"] = {k: v for k, v in j["stats"].items() if not k.startswith("seconds")}
+    return j
+
+
+def test_shadows_match_cli_json(tmp_path):
+    room = os.path.join(SOURCE, "scenes", "lamp_room.obj")
+    j = cli_json("shadows", room, "--light", "lamp", "--json", "-q")
+    calls = []
+    got = exactvis.shadows(room, light="lamp", progress=lambda d, t: calls.append((d, t)))
+    assert without_seconds(got) == without_seconds(j) and calls
+    c = j["counts"]
+    assert c["umbra"] > 0 and c["penumbra"] > 0 and c["lit"] > 0 and c["faces"] == c["umbra"] + c["penumbra"] + c["lit"]
+    # an exact re-check of one thing the mesh claims: each face's sample lies on its receiver's plane
+    scene = exactvis.load_scene(room)
+    for r in j["receivers"]:
+        tri = [[Fraction(float(x)) for x in scene.vertices[v]] for v in scene.faces[list(scene.ids).index(r["triangle"])]]
+        n = cross(sub(tri[1], tri[0]), sub(tri[2], tri[0]))
+        for f in r["faces"]:
+            assert dot(n, sub([exactvis.fraction(x) for x in f["sample"]], tri[0])) == 0
+    ids = [r["triangle"] for r in j["receivers"]][:2]
+    jr = cli_json("shadows", room, "--light", "lamp", "--receivers", ",".join(map(str, ids)), "--json", "-q")
+    assert without_seconds(exactvis.shadows(scene, light=["lamp"], receivers=ids)) == without_seconds(jr)
+    poly = [(1.75, 1.75, 2.25), (2.25, 1.75, 2.25), (2.25, 2.25, 2.25)]
+    jp = cli_json("shadows", room, "--light", "1.75,1.75,2.25;2.25,1.75,2.25;2.25,2.25,2.25", "--json", "-q")
+    assert without_seconds(exactvis.shadows(room, light=poly)) == without_seconds(jp)
+
+
+def test_shadows_bad_input_messages_as_cli():
+    room = os.path.join(SOURCE, "scenes", "lamp_room.obj")
+    for kwargs, args in [(dict(light="sun"), ["--light", "sun"]),
+                         (dict(light="lamp", receivers="1,x"), ["--light", "lamp", "--receivers", "1,x"]),
+                         (dict(light="lamp", receivers=[99]), ["--light", "lamp", "--receivers", "99"]),
+                         (dict(light="lamp", receivers=[14]), ["--light", "lamp", "--receivers", "14"])]:
+        with pytest.raises(ValueError) as e:
+            exactvis.shadows(room, **kwargs)
+        assert str(e.value) == cli_error("shadows", room, *args, "-q")
+

@@ -6,6 +6,9 @@
 
 #include <filesystem>
 #include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
 
 namespace {
 
@@ -118,13 +121,51 @@ TEST(AspectCli, PerspectiveOnANonConvexModelPointsToPlane) {
   EXPECT_NE(r.err.find("--plane"), std::string::npos) << r.err;
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1);
   EXPECT_FALSE(fs::exists(d / "o.json"));
-  // Orthographic and --plane on non-convex models: not implemented, said so in one line.
-  for (const std::string view : {"--orthographic", "--plane z=0"}) {
-    const auto o = run_exactvis(d, "aspect " + (d / "two.obj").string() + " " + view);
-    EXPECT_EQ(o.status, 1);
-    EXPECT_NE(o.err.find("not implemented yet"), std::string::npos) << o.err;
-    EXPECT_EQ(std::count(o.err.begin(), o.err.end(), '\n'), 1);
+  // --plane on non-convex models: not implemented, said so in one line.
+  const auto o = run_exactvis(d, "aspect " + (d / "two.obj").string() + " --plane z=0");
+  EXPECT_EQ(o.status, 1);
+  EXPECT_NE(o.err.find("not implemented yet"), std::string::npos) << o.err;
+  EXPECT_EQ(std::count(o.err.begin(), o.err.end(), '\n'), 1);
+}
+
+// Two boxes with a gap of 2: orthographic works (docs/theory.md 10.5), the JSON shape, 26 regions;
+// a third box in a row makes a front part of two boxes (EEE events possible): one-line error, no output.
+TEST(AspectCli, OrthographicNonConvexModels) {
+  const fs::path d = test_dir("nonconvex_ortho");
+  write_two_boxes(d / "two.obj");
+  const auto r = run_exactvis(d, "aspect " + (d / "two.obj").string() + " --orthographic --json -q");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["counts"]["regions"], 26);
+  EXPECT_EQ(j["regions"].size(), 26u);
+  EXPECT_EQ(j["adjacency"][0][2]["type"], "EV");
+  const auto t = run_exactvis(d, "aspect " + (d / "two.obj").string() + " --orthographic");
+  EXPECT_NE(t.out.find("non-convex closed model with 24 triangles"), std::string::npos) << t.out;
+  const auto v = run_exactvis(d, "aspect " + (d / "two.obj").string() + " --orthographic --vtp " + (d / "s.vtp").string());
+  EXPECT_EQ(v.status, 1);
+  EXPECT_NE(v.err.find("--vtp"), std::string::npos) << v.err;
+  EXPECT_FALSE(fs::exists(d / "s.vtp"));
+  {
+    std::ifstream in(d / "two.obj");
+    std::ofstream out(d / "three.obj");
+    std::string line;
+    std::vector<std::string> faces;
+    while (std::getline(in, line)) (line[0] == 'v' ? out << line << "\n" : (faces.push_back(line), out));
+    for (int k = 0; k < 8; ++k) out << "v " << (k & 1) + 6 << " " << ((k >> 1) & 1) << " " << ((k >> 2) & 1) << "\n";
+    for (const auto& f : faces) out << f << "\n";
+    for (std::size_t i = 0; i < 12; ++i) {  // the first box's faces shifted to the third box's vertices
+      std::istringstream fs(faces[i].substr(2));
+      int a, b, c;
+      fs >> a >> b >> c;
+      out << "f " << a + 16 << " " << b + 16 << " " << c + 16 << "\n";
+    }
   }
+  const auto e = run_exactvis(d, "aspect " + (d / "three.obj").string() + " --orthographic -o " + (d / "o.json").string());
+  EXPECT_EQ(e.status, 1);
+  EXPECT_NE(e.err.find("three.obj: the part of the model in front of triangle"), std::string::npos) << e.err;
+  EXPECT_NE(e.err.find("not implemented yet"), std::string::npos) << e.err;
+  EXPECT_EQ(std::count(e.err.begin(), e.err.end(), '\n'), 1);
+  EXPECT_FALSE(fs::exists(d / "o.json"));
 }
 
 TEST(AspectCli, BadOptions) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <set>
+#include <stdexcept>
 
 namespace oracle {
 
@@ -58,6 +59,128 @@ std::vector<int> convex_point_aspect(const std::vector<OTriangle>& model, const 
     const QVec c = centroid(model[i]);
     if (sign(dot(normal(model[i]), p - c)) == 0) continue;  // edge-on
     if (free_segment(model, i, c, p)) seen.push_back(static_cast<int>(i));
+  }
+  return seen;
+}
+
+namespace {
+
+struct P2 {
+  mpq_class x, y;
+};
+struct Seg2 {
+  P2 a, b;  // a.x <= b.x
+};
+
+// y of the non-vertical segment s at abscissa x (a.x <= x <= b.x).
+mpq_class y_at(const Seg2& s, const mpq_class& x) { return mpq_class(s.a.y + (s.b.y - s.a.y) * (x - s.a.x) / (s.b.x - s.a.x)); }
+
+}  // namespace
+
+std::vector<int> direction_aspect(const std::vector<OTriangle>& model, const QVec& d) {
+  // Project along d onto the coordinate plane of the two other axes than the dominant one (k); a point
+  // p = (u, v) + depth * d with depth = p_k / d_k; larger depth = nearer the viewer.
+  int k = 0;
+  const mpq_class c[3] = {d.x, d.y, d.z};
+  for (int i = 1; i < 3; ++i)
+    if (abs(c[i]) > abs(c[k])) k = i;
+  const int i0 = (k + 1) % 3, i1 = (k + 2) % 3;
+  const auto coord = [](const QVec& p, int i) -> mpq_class { return i == 0 ? p.x : (i == 1 ? p.y : p.z); };
+  const std::size_t n = model.size();
+  std::vector<std::array<P2, 3>> img(n);
+  std::vector<std::array<mpq_class, 3>> depth(n);
+  std::vector<bool> flat(n);
+  for (std::size_t t = 0; t < n; ++t) {
+    for (int j = 0; j < 3; ++j) {
+      const QVec& p = model[t][j];
+      depth[t][j] = coord(p, k) / c[k];
+      img[t][j] = {coord(p, i0) - depth[t][j] * c[i0], coord(p, i1) - depth[t][j] * c[i1]};
+    }
+    const mpq_class area2 = (img[t][1].x - img[t][0].x) * (img[t][2].y - img[t][0].y) -
+                            (img[t][1].y - img[t][0].y) * (img[t][2].x - img[t][0].x);
+    flat[t] = area2 == 0;
+  }
+  // Barycentric interpolation of the depth of triangle t at q (q inside its image).
+  const auto depth_at = [&](std::size_t t, const P2& q) -> mpq_class {
+    const P2 &a = img[t][0], &b = img[t][1], &cc = img[t][2];
+    const mpq_class den = (b.x - a.x) * (cc.y - a.y) - (b.y - a.y) * (cc.x - a.x);
+    const mpq_class l1 = ((q.x - a.x) * (cc.y - a.y) - (q.y - a.y) * (cc.x - a.x)) / den;
+    const mpq_class l2 = ((b.x - a.x) * (q.y - a.y) - (b.y - a.y) * (q.x - a.x)) / den;
+    return depth[t][0] + l1 * (depth[t][1] - depth[t][0]) + l2 * (depth[t][2] - depth[t][0]);
+  };
+  const auto strictly_inside = [&](std::size_t t, const P2& q) {
+    int s[3];
+    for (int j = 0; j < 3; ++j) {
+      const P2& a = img[t][j];
+      const P2& b = img[t][(j + 1) % 3];
+      s[j] = sign((b.x - a.x) * (q.y - a.y) - (b.y - a.y) * (q.x - a.x));
+    }
+    return (s[0] > 0 && s[1] > 0 && s[2] > 0) || (s[0] < 0 && s[1] < 0 && s[2] < 0);
+  };
+  // Segments: the edges of every triangle with an image; event abscissae: their ends and crossings (once).
+  std::vector<Seg2> segs;
+  for (std::size_t u = 0; u < n; ++u) {
+    if (flat[u]) continue;
+    for (int j = 0; j < 3; ++j) {
+      P2 a = img[u][j], b = img[u][(j + 1) % 3];
+      if (b.x < a.x) std::swap(a, b);
+      segs.push_back({a, b});
+    }
+  }
+  std::vector<mpq_class> all_xs;
+  for (const auto& s : segs) all_xs.push_back(s.a.x), all_xs.push_back(s.b.x);
+  for (std::size_t a = 0; a < segs.size(); ++a)
+    for (std::size_t b = a + 1; b < segs.size(); ++b) {
+      const Seg2 &s = segs[a], &r = segs[b];
+      if (s.b.x < r.a.x || r.b.x < s.a.x) continue;
+      const mpq_class dx1 = s.b.x - s.a.x, dy1 = s.b.y - s.a.y, dx2 = r.b.x - r.a.x, dy2 = r.b.y - r.a.y;
+      const mpq_class den = dx1 * dy2 - dy1 * dx2;
+      if (den == 0) continue;  // parallel: no single crossing (overlaps add no abscissa)
+      const mpq_class u = ((r.a.x - s.a.x) * dy2 - (r.a.y - s.a.y) * dx2) / den;
+      const mpq_class v = ((r.a.x - s.a.x) * dy1 - (r.a.y - s.a.y) * dx1) / den;
+      if (u < 0 || u > 1 || v < 0 || v > 1) continue;
+      all_xs.push_back(mpq_class(s.a.x + u * dx1));
+    }
+  std::sort(all_xs.begin(), all_xs.end());
+  all_xs.erase(std::unique(all_xs.begin(), all_xs.end()), all_xs.end());
+  // Per slab (between all_xs[j] and all_xs[j + 1]), the sorted ordinates of the edges at its middle.
+  std::vector<std::vector<mpq_class>> slab_ys(all_xs.empty() ? 0 : all_xs.size() - 1);
+  std::vector<bool> slab_done(slab_ys.size(), false);
+  std::vector<int> seen;
+  for (std::size_t t = 0; t < n; ++t) {
+    if (flat[t]) continue;
+    mpq_class lo = img[t][0].x, hi = img[t][0].x;
+    for (int j = 1; j < 3; ++j) lo = std::min(lo, img[t][j].x), hi = std::max(hi, img[t][j].x);
+    std::vector<std::size_t> others;
+    for (std::size_t u = 0; u < n; ++u)
+      if (!flat[u] && u != t) others.push_back(u);
+    bool visible = false;
+    const std::size_t first = std::lower_bound(all_xs.begin(), all_xs.end(), lo) - all_xs.begin();
+    for (std::size_t j = first; j + 1 < all_xs.size() && all_xs[j] < hi && !visible; ++j) {
+      const mpq_class xm = (all_xs[j] + all_xs[j + 1]) / 2;
+      if (!slab_done[j]) {
+        for (const auto& s : segs)
+          if (s.a.x < xm && xm < s.b.x) slab_ys[j].push_back(y_at(s, xm));
+        std::sort(slab_ys[j].begin(), slab_ys[j].end());
+        slab_ys[j].erase(std::unique(slab_ys[j].begin(), slab_ys[j].end()), slab_ys[j].end());
+        slab_done[j] = true;
+      }
+      const std::vector<mpq_class>& ys = slab_ys[j];
+      for (std::size_t m = 0; m + 1 < ys.size() && !visible; ++m) {
+        const P2 q{xm, (ys[m] + ys[m + 1]) / 2};
+        if (!strictly_inside(t, q)) continue;
+        const mpq_class dt = depth_at(t, q);
+        bool hidden = false;
+        for (std::size_t u : others) {
+          if (!strictly_inside(u, q)) continue;
+          const mpq_class du = depth_at(u, q);
+          if (du == dt) throw std::invalid_argument("direction_aspect: triangles cross or overlap");
+          if (du > dt) { hidden = true; break; }
+        }
+        visible = !hidden;
+      }
+    }
+    if (visible) seen.push_back(static_cast<int>(t));
   }
   return seen;
 }

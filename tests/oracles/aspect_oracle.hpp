@@ -25,6 +25,15 @@ std::vector<int> convex_direction_aspect(const std::vector<OTriangle>& model, co
 // Perspective: the viewer at point p (outside the closed model).
 std::vector<int> convex_point_aspect(const std::vector<OTriangle>& model, const QVec& p);
 
+// Any model whose triangles meet only in shared corners and edges (no crossings, no coplanar overlaps):
+// the triangles seen with positive measure from direction d (the viewer at infinity along +d), by exact
+// vertical-slab decomposition of the projection along d: t is seen iff some sample point strictly inside
+// t's projection, taken in every trapezoid between consecutive projected edges of every slab between
+// consecutive event abscissae (projected corners and edge crossings), has no other triangle in front of t
+// (depths compared exactly). A region of positive area seen contains a whole trapezoid; a trapezoid
+// crosses no edge, so its points are all seen or all hidden. Two-sided triangles; edge-on ones have no image.
+std::vector<int> direction_aspect(const std::vector<OTriangle>& model, const QVec& d);
+
 struct GreatCircleCounts {
   std::int64_t circles = 0, vertices = 0, arcs = 0, faces = 0;
   bool simple = true;

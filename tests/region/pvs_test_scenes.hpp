@@ -2,51 +2,14 @@
 // Small adversarial scenes for the PVS suites: a closed room with a pinhole, triangles sharing edges,
 // ground coplanar with building bottoms, built triangle by triangle with ids in insertion order.
 #include "kernel/scene.hpp"
+#include "tests/region/region_scene_builder.hpp"
 
 #include <random>
 #include <string>
 
 namespace exactvis::pvs_test {
 
-struct SceneBuilder {
-  Scene scene;
-  SceneBuilder() { scene.objects.push_back({"object0"}); }
-  void object(const std::string& name) { scene.objects.push_back({name}); }
-  int add_vertex(const Point3& p) {
-    scene.vertices.push_back(p);
-    return static_cast<int>(scene.vertices.size()) - 1;
-  }
-  std::int64_t triangle(const Point3& a, const Point3& b, const Point3& c) {
-    SceneTriangle t;
-    t.id = static_cast<std::int64_t>(scene.triangles.size());
-    t.v = {add_vertex(a), add_vertex(b), add_vertex(c)};
-    t.object = static_cast<int>(scene.objects.size()) - 1;
-    scene.triangles.push_back(t);
-    scene.faces_read++;
-    return t.id;
-  }
-  void quad(const Point3& a, const Point3& b, const Point3& c, const Point3& d) {
-    triangle(a, b, c);
-    triangle(a, c, d);
-  }
-  // The axis-aligned rectangle [u0,u1] x [v0,v1] in the plane coordinate `axis` = w (u = axis+1, v = axis+2).
-  void rect(int axis, double w, double u0, double u1, double v0, double v1) {
-    auto P = [&](double u, double v) {
-      Point3 p;
-      p[axis] = w;
-      p[(axis + 1) % 3] = u;
-      p[(axis + 2) % 3] = v;
-      return p;
-    };
-    quad(P(u0, v0), P(u1, v0), P(u1, v1), P(u0, v1));
-  }
-  // Closed box (shared corners, 12 triangles).
-  void box(const Point3& lo, const Point3& hi) {
-    for (int axis = 0; axis < 3; ++axis)
-      for (double w : {lo[axis], hi[axis]})
-        rect(axis, w, lo[(axis + 1) % 3], hi[(axis + 1) % 3], lo[(axis + 2) % 3], hi[(axis + 2) % 3]);
-  }
-};
+using SceneBuilder = region_test::SceneBuilder;
 
 // A closed room [0,10]^3 whose wall x = 0 has a square hole of side `hole` (0: no hole) centred at a random
 // point (fixed by `seed`), the wall tiled around it by rectangles meeting exactly at the hole's edges;

@@ -5,6 +5,7 @@
 #include "region/from_region_visibility.hpp"
 
 #include "oracles/visibility_oracle.hpp"
+#include "tests/region/region_scene_builder.hpp"
 
 #include <gtest/gtest.h>
 
@@ -15,35 +16,7 @@ using namespace exactvis::region;
 
 namespace {
 
-struct SceneBuilder {
-  Scene scene;
-  int add_vertex(const Point3& p) {
-    scene.vertices.push_back(p);
-    return static_cast<int>(scene.vertices.size()) - 1;
-  }
-  std::int64_t triangle(const Point3& a, const Point3& b, const Point3& c) {
-    SceneTriangle t;
-    t.id = static_cast<std::int64_t>(scene.triangles.size());
-    t.v = {add_vertex(a), add_vertex(b), add_vertex(c)};
-    scene.triangles.push_back(t);
-    return t.id;
-  }
-  // Quad a-b-c-d as two triangles (a,b,c), (a,c,d).
-  void quad(const Point3& a, const Point3& b, const Point3& c, const Point3& d) {
-    triangle(a, b, c);
-    triangle(a, c, d);
-  }
-  // Closed axis-aligned box with shared corners (12 triangles, outward orientation).
-  void box(const Point3& lo, const Point3& hi) {
-    auto P = [&](int i, int j, int k) { return Point3{i ? hi.x : lo.x, j ? hi.y : lo.y, k ? hi.z : lo.z}; };
-    quad(P(1, 0, 0), P(1, 1, 0), P(1, 1, 1), P(1, 0, 1));
-    quad(P(0, 0, 0), P(0, 0, 1), P(0, 1, 1), P(0, 1, 0));
-    quad(P(0, 1, 0), P(0, 1, 1), P(1, 1, 1), P(1, 1, 0));
-    quad(P(0, 0, 0), P(1, 0, 0), P(1, 0, 1), P(0, 0, 1));
-    quad(P(0, 0, 1), P(1, 0, 1), P(1, 1, 1), P(0, 1, 1));
-    quad(P(0, 0, 0), P(0, 1, 0), P(1, 1, 0), P(1, 0, 0));
-  }
-};
+using region_test::SceneBuilder;
 
 oracle::QVec qv(const Point3& p) { return oracle::qvec(p.x, p.y, p.z); }
 oracle::QVec qv(const RationalPoint3& p) {

@@ -6,6 +6,7 @@
 
 #include "kernel/scene_generators.hpp"
 #include "oracles/visibility_oracle.hpp"
+#include "tests/region/region_scene_builder.hpp"
 #include "tests/region/oracle_input.hpp"
 
 #include <gtest/gtest.h>
@@ -21,31 +22,7 @@ namespace {
 
 using region_test::qv;
 
-struct SceneBuilder {
-  Scene scene;
-  std::int64_t triangle(const Point3& a, const Point3& b, const Point3& c) {
-    SceneTriangle t;
-    t.id = static_cast<std::int64_t>(scene.triangles.size());
-    for (int k = 0; k < 3; ++k) t.v[k] = static_cast<int>(scene.vertices.size()) + k;
-    scene.vertices.insert(scene.vertices.end(), {a, b, c});
-    scene.triangles.push_back(t);
-    scene.faces_read = static_cast<std::int64_t>(scene.triangles.size());
-    return t.id;
-  }
-  void quad(const Point3& a, const Point3& b, const Point3& c, const Point3& d) {
-    triangle(a, b, c);
-    triangle(a, c, d);
-  }
-  void box(const Point3& lo, const Point3& hi) {
-    auto P = [&](int i, int j, int k) { return Point3{i ? hi.x : lo.x, j ? hi.y : lo.y, k ? hi.z : lo.z}; };
-    quad(P(1, 0, 0), P(1, 1, 0), P(1, 1, 1), P(1, 0, 1));
-    quad(P(0, 0, 0), P(0, 0, 1), P(0, 1, 1), P(0, 1, 0));
-    quad(P(0, 1, 0), P(0, 1, 1), P(1, 1, 1), P(1, 1, 0));
-    quad(P(0, 0, 0), P(1, 0, 0), P(1, 0, 1), P(0, 0, 1));
-    quad(P(0, 0, 1), P(1, 0, 1), P(1, 1, 1), P(0, 1, 1));
-    quad(P(0, 0, 0), P(0, 1, 0), P(1, 1, 0), P(1, 0, 0));  // bottom: the last two triangles
-  }
-};
+using region_test::SceneBuilder;
 
 std::vector<std::int64_t> indices_where(const std::vector<bool>& v, bool value) {
   std::vector<std::int64_t> out;

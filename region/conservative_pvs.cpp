@@ -1,0 +1,152 @@
+#include "region/conservative_pvs.hpp"
+
+#include "region/cell_visibility.hpp"
+#include "region/wall_umbra.hpp"
+#include "util/for_each_index.hpp"
+
+#include <tbb/parallel_invoke.h>
+#include <tbb/task_arena.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <functional>
+#include <numeric>
+#include <stdexcept>
+#include <string>
+
+namespace exactvis::region {
+namespace {
+
+Box3 approximate(const RationalBox3& b) {
+  return {{CGAL::to_double(b.lo.x), CGAL::to_double(b.lo.y), CGAL::to_double(b.lo.z)},
+          {CGAL::to_double(b.hi.x), CGAL::to_double(b.hi.y), CGAL::to_double(b.hi.z)}};
+}
+
+UmbraTarget box_target(const Box3& b) {
+  return {{Point3{b.lo.x, b.lo.y, 0}, Point3{b.hi.x, b.lo.y, 0}, Point3{b.lo.x, b.hi.y, 0}, Point3{b.hi.x, b.hi.y, 0}},
+          b.lo.z, b.hi.z};
+}
+
+UmbraTarget triangle_target(const Scene& scene, const SceneTriangle& t) {
+  UmbraTarget u;
+  u.z_lo = u.z_hi = scene.corner(t, 0).z;
+  for (int k = 0; k < 3; ++k) {
+    u.points.push_back(scene.corner(t, k));
+    u.z_lo = std::min(u.z_lo, scene.corner(t, k).z);
+    u.z_hi = std::max(u.z_hi, scene.corner(t, k).z);
+  }
+  return u;
+}
+
+}  // namespace
+
+CellPvs conservative_cell_pvs(const PvsContext& context, const RationalBox3& cell, const PvsOptions& options) {
+  check_view_cell(cell);
+  if (options.threads < 0 || options.threads > kMaxThreads)
+    throw std::invalid_argument("thread count " + std::to_string(options.threads) + " is outside 0 .. " +
+                                std::to_string(kMaxThreads));
+  const auto start = std::chrono::steady_clock::now();
+  const Scene& scene = context.scene();
+  const std::size_t n = scene.triangles.size();
+  const std::vector<WallRectangle>& walls = context.extruded().walls;
+  const Box3 approx = approximate(cell);
+
+  // The walls that can hide anything from this cell (cell strictly on one side, spanning its heights),
+  // nearest first: a near wall has the widest umbra.
+  std::vector<WallFromCell> prepared(walls.size());
+  std::vector<std::size_t> usable;
+  for (std::size_t w = 0; w < walls.size(); ++w) {
+    prepared[w] = prepare_wall(walls[w], approx);
+    if (prepared[w].usable) usable.push_back(w);
+  }
+  const double cx = 0.5 * (approx.lo.x + approx.hi.x), cy = 0.5 * (approx.lo.y + approx.hi.y);
+  std::vector<double> distance(walls.size(), 0);
+  for (const std::size_t w : usable) {
+    const WallRectangle& r = walls[w];
+    // Distance from the cell's centre to the wall's segment (ordering only).
+    const double dx = r.bx - r.ax, dy = r.by - r.ay, len2 = dx * dx + dy * dy;
+    const double s = len2 > 0 ? std::clamp(((cx - r.ax) * dx + (cy - r.ay) * dy) / len2, 0.0, 1.0) : 0.0;
+    distance[w] = std::hypot(cx - (r.ax + s * dx), cy - (r.ay + s * dy));
+  }
+  std::stable_sort(usable.begin(), usable.end(), [&](std::size_t a, std::size_t b) { return distance[a] < distance[b]; });
+
+  std::atomic<std::int64_t> exact_tests{0}, nodes_tested{0}, nodes_hidden{0};
+  // A proof that `target` is hidden by one wall: `hint` (the wall of the last proof nearby) first.
+  auto hidden = [&](const UmbraTarget& target, std::ptrdiff_t& hint) {
+    auto attempt = [&](std::size_t w) {
+      if (!wall_may_hide(walls[w], prepared[w], approx, target)) return false;
+      exact_tests.fetch_add(1, std::memory_order_relaxed);
+      return wall_hides_exactly(walls[w], cell, target);
+    };
+    if (hint >= 0 && attempt(static_cast<std::size_t>(hint))) return true;
+    for (const std::size_t w : usable)
+      if (static_cast<std::ptrdiff_t>(w) != hint && attempt(w)) {
+        hint = static_cast<std::ptrdiff_t>(w);
+        return true;
+      }
+    return false;
+  };
+
+  std::vector<char> culled(n, 0);
+  std::atomic<std::int64_t> decided{0};
+  auto report = [&](std::int64_t k) {
+    const std::int64_t d = decided.fetch_add(k) + k;
+    if (options.on_progress) options.on_progress(d);
+  };
+  auto decide_triangle = [&](std::size_t i, std::ptrdiff_t& hint) {
+    if (hidden(triangle_target(scene, scene.triangles[i]), hint)) culled[i] = 1;
+    report(1);
+  };
+  const TriangleBvh& bvh = context.bvh();
+  std::function<void(int, std::ptrdiff_t)> visit = [&](int index, std::ptrdiff_t hint) {
+    const BvhNode& node = bvh.nodes[static_cast<std::size_t>(index)];
+    if (node.end - node.begin > 1) {
+      nodes_tested.fetch_add(1, std::memory_order_relaxed);
+      if (hidden(box_target(node.box), hint)) {
+        nodes_hidden.fetch_add(1, std::memory_order_relaxed);
+        for (int i = node.begin; i < node.end; ++i) culled[static_cast<std::size_t>(bvh.order[static_cast<std::size_t>(i)])] = 1;
+        report(node.end - node.begin);
+        return;
+      }
+    }
+    if (node.left < 0) {
+      for (int i = node.begin; i < node.end; ++i) decide_triangle(static_cast<std::size_t>(bvh.order[static_cast<std::size_t>(i)]), hint);
+      return;
+    }
+    if (options.threads == 1) {
+      visit(node.left, hint);
+      visit(node.right, hint);
+    } else {
+      tbb::parallel_invoke([&] { visit(node.left, hint); }, [&] { visit(node.right, hint); });
+    }
+  };
+  tbb::task_arena arena(options.threads > 0 ? options.threads : tbb::task_arena::automatic);
+  if (!usable.empty()) {
+    if (options.hierarchy && !bvh.nodes.empty()) arena.execute([&] { visit(0, -1); });
+    else
+      arena.execute([&] {
+        for_each_index(n, options.threads != 1, 16, [&](std::size_t i) {
+          std::ptrdiff_t hint = -1;
+          decide_triangle(i, hint);
+        });
+      });
+  }
+
+  CellPvs out;
+  out.cell = cell;
+  out.stats.triangles = static_cast<std::int64_t>(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (culled[i]) ++out.stats.culled;
+    else out.visible.push_back({static_cast<std::int64_t>(i), std::nullopt});
+  }
+  out.stats.visible = static_cast<std::int64_t>(out.visible.size());
+  out.stats.exact_queries = exact_tests.load();
+  out.stats.boxes_tested = nodes_tested.load();
+  out.stats.boxes_culled = nodes_hidden.load();
+  out.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return out;
+}
+
+}  // namespace exactvis::region

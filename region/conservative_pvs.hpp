@@ -1,0 +1,29 @@
+#pragma once
+// The conservative PVS of one view cell (method `conservative` of `exactvis pvs`, issue #12): a fast
+// baseline that can only overestimate (docs/theory.md §5.9).
+//
+// A triangle is left out only with a proof that it is hidden; every other triangle is listed (without a
+// witness: "listed" means "not proved hidden", not "visible"). So the conservative PVS contains the exact
+// PVS, and validate reports its extra triangles as false visible.
+// - 2.5D scenes (region/extruded_scene.hpp): seed 001's factorization, one wall rectangle at a time
+//   (region/wall_umbra.hpp): the target's top-view footprint in the wall's 2D umbra from the cell's
+//   footprint, and the vertical umbra bound in every directional plane. Walls come merged into maximal runs
+//   (a facade strip, a column between windows), which is the vertical/horizontal umbra merging of a wall's
+//   own pieces. The scene's triangle hierarchy (region/triangle_bvh.hpp) is traversed from the root: a
+//   node box proved hidden by one wall hides its whole subtree.
+// - Other scenes (fallback): the same wall proofs for the scene's vertical rectangles, when it has any
+//   (e.g. tree trunks); no other occluders yet (see docs/theory.md §5.9).
+// Floats only choose which wall to try (a double version of the test); each proof is exact.
+#include "region/cell_pvs.hpp"
+
+namespace exactvis::region {
+
+// Input: the context, a cell (lo < hi, else std::invalid_argument), options (threads, hierarchy). Output:
+// every triangle not proved hidden (sorted by index, no witnesses); stats.culled = triangles proved
+// hidden, stats.boxes_tested / boxes_culled = hierarchy nodes tested / proved hidden, stats.exact_queries =
+// exact wall tests run (each proposed by the double test), stats.visible = listed. Deterministic. Cost: per
+// tested node or triangle, one double test per wall on the cell's far side... in the worst case
+// O((nodes + n) * walls) double tests, plus one exact test per proposal.
+CellPvs conservative_cell_pvs(const PvsContext& context, const RationalBox3& cell, const PvsOptions& options);
+
+}  // namespace exactvis::region

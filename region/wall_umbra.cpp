@@ -1,0 +1,101 @@
+#include "region/wall_umbra.hpp"
+
+#include <algorithm>
+#include <array>
+
+namespace exactvis::region {
+namespace {
+
+template <class NT>
+struct P2 {
+  NT x, y;
+};
+
+template <class NT>
+NT cross(const P2<NT>& a, const P2<NT>& b, const P2<NT>& p) {
+  return (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x);
+}
+
+template <class NT>
+int sgn(const NT& v) {
+  return v > NT(0) ? 1 : (v < NT(0) ? -1 : 0);
+}
+
+// The test of wall_umbra.hpp in number type NT (double: a proposal; Exact: the proof).
+template <class NT>
+bool hides(const WallRectangle& wall, const std::array<P2<NT>, 4>& cell_xy, const NT& cz0, const NT& cz1,
+           const std::vector<P2<NT>>& q, const NT& tz0, const NT& tz1) {
+  if (q.empty()) return false;
+  const P2<NT> a{NT(wall.ax), NT(wall.ay)}, b{NT(wall.bx), NT(wall.by)};
+  const int s = sgn(cross(a, b, cell_xy[0]));
+  if (s == 0) return false;
+  NT a_min, a_max;
+  for (std::size_t i = 0; i < 4; ++i) {
+    const NT v = cross(a, b, cell_xy[i]) * NT(s);
+    if (!(v > NT(0))) return false;  // the cell must be strictly on one side
+    if (i == 0 || v < a_min) a_min = v;
+    if (i == 0 || v > a_max) a_max = v;
+  }
+  NT b_min, b_max;
+  for (std::size_t j = 0; j < q.size(); ++j) {
+    const NT v = -cross(a, b, q[j]) * NT(s);
+    if (!(v > NT(0))) return false;  // the target strictly on the other side
+    if (j == 0 || v < b_min) b_min = v;
+    if (j == 0 || v > b_max) b_max = v;
+  }
+  // Vertical component first (cheap): the crossing height stays within the wall.
+  const NT wl(wall.z_lo), wh(wall.z_hi);
+  for (const NT lambda : {a_min / (a_min + b_max), a_max / (a_max + b_min)}) {
+    const NT one_minus = NT(1) - lambda;
+    if (one_minus * cz1 + lambda * tz1 > wh) return false;
+    if (one_minus * cz0 + lambda * tz0 < wl) return false;
+  }
+  // Horizontal component: every corner-to-point segment crosses [a, b] (a, b on opposite closed sides).
+  for (const auto& c : cell_xy)
+    for (const auto& p : q)
+      if (sgn(cross(c, p, a)) * sgn(cross(c, p, b)) > 0) return false;
+  return true;
+}
+
+}  // namespace
+
+WallFromCell prepare_wall(const WallRectangle& wall, const Box3& cell) {
+  WallFromCell out;
+  const P2<double> a{wall.ax, wall.ay}, b{wall.bx, wall.by};
+  const std::array<P2<double>, 4> corners{{{cell.lo.x, cell.lo.y}, {cell.hi.x, cell.lo.y}, {cell.lo.x, cell.hi.y}, {cell.hi.x, cell.hi.y}}};
+  const double f0 = cross(a, b, corners[0]);
+  if (f0 == 0) return out;
+  out.side = f0 > 0 ? 1 : -1;
+  for (std::size_t i = 0; i < 4; ++i) {
+    const double v = cross(a, b, corners[i]) * out.side;
+    if (!(v > 0)) return out;
+    if (i == 0 || v < out.a_min) out.a_min = v;
+    if (i == 0 || v > out.a_max) out.a_max = v;
+  }
+  out.usable = true;  // heights are checked per target (a cell above a wall still looks down behind it)
+  return out;
+}
+
+bool wall_may_hide(const WallRectangle& wall, const WallFromCell& prepared, const Box3& cell,
+                   const UmbraTarget& target) {
+  if (!prepared.usable) return false;
+  const P2<double> a{wall.ax, wall.ay}, b{wall.bx, wall.by};
+  // Quick rejection before the full double test: some target point not beyond the line.
+  for (const auto& p : target.points)
+    if (!(-cross(a, b, P2<double>{p.x, p.y}) * prepared.side > 0)) return false;
+  const std::array<P2<double>, 4> corners{{{cell.lo.x, cell.lo.y}, {cell.hi.x, cell.lo.y}, {cell.lo.x, cell.hi.y}, {cell.hi.x, cell.hi.y}}};
+  std::vector<P2<double>> q;
+  q.reserve(target.points.size());
+  for (const auto& p : target.points) q.push_back({p.x, p.y});
+  return hides<double>(wall, corners, cell.lo.z, cell.hi.z, q, target.z_lo, target.z_hi);
+}
+
+bool wall_hides_exactly(const WallRectangle& wall, const RationalBox3& cell, const UmbraTarget& target) {
+  const std::array<P2<Exact>, 4> corners{{{cell.lo.x, cell.lo.y}, {cell.hi.x, cell.lo.y}, {cell.lo.x, cell.hi.y}, {cell.hi.x, cell.hi.y}}};
+  std::vector<P2<Exact>> q;
+  q.reserve(target.points.size());
+  for (const auto& p : target.points) q.push_back({Exact(p.x), Exact(p.y)});
+  return hides<Exact>(wall, corners, cell.lo.z, cell.hi.z, q, Exact(target.z_lo), Exact(target.z_hi));
+}
+
+}  // namespace exactvis::region

@@ -1,0 +1,46 @@
+#pragma once
+// The occlusion proof of method `conservative` in 2.5D (docs/theory.md §5.9): seed 001's factorization of
+// from-region visibility into a horizontal component (2D footprints, seen from above) and a vertical one
+// (the umbra in each vertical "directional plane"), here for one wall rectangle and decided exactly.
+//
+// A target region R (a triangle or a box: its xy projection inside conv(Q_1..Q_k), its z inside
+// [z_lo, z_hi]) is hidden from the closed cell C by the closed wall W = [a, b] x [w_lo, w_hi] when
+//  (horizontal) the cell's xy rectangle and every Q_j lie strictly on opposite sides of the line ab, and
+//   every segment from a cell corner to a Q_j meets the segment [a, b]: then every segment from C to R
+//   crosses [a, b] in its projection, at a parameter lambda in [lambda_min, lambda_max] inside (0, 1);
+//  (vertical) the height of such a crossing, (1 - lambda) z_p + lambda z_q, lies in [w_lo, w_hi] for all
+//   lambda in that range and all heights z_p of the cell and z_q of R (linear: checked at the ends).
+// Then every segment from C to R meets W (a union of closed scene triangles) at an interior point, so R is
+// hidden: a proof, never an estimate. lambda = A / (A + B) with A, B the distances of the two endpoints'
+// projections to the line ab: its extremes come from the extremes of A over the cell's corners and of B over
+// the Q_j (linear functionals), so no square roots appear.
+#include "region/convex_polygon_3.hpp"
+#include "region/extruded_scene.hpp"
+
+#include <vector>
+
+namespace exactvis::region {
+
+// A target region in this test's terms: xy points whose convex hull contains its projection, and its z range.
+struct UmbraTarget {
+  std::vector<Point3> points;  // only x, y are used
+  double z_lo = 0, z_hi = 0;
+};
+
+// The cell and the wall as prepared once per (cell, wall) in doubles: a proposal filter only (it may
+// reject a wall that would pass, never is its acceptance final: wall_hides_exactly decides).
+struct WallFromCell {
+  bool usable = false;   // the cell's xy rectangle is strictly on one side of the wall's line (in doubles)
+  double side = 0;       // +1 or -1: the sign of the line functional on the cell
+  double a_min = 0, a_max = 0;  // extremes of side * f over the cell corners (f(p) = (b - a) x (p - a))
+};
+WallFromCell prepare_wall(const WallRectangle& wall, const Box3& cell_approx);
+
+// Double-precision version of the test (a proposal: true means "worth the exact test").
+bool wall_may_hide(const WallRectangle& wall, const WallFromCell& prepared, const Box3& cell_approx,
+                   const UmbraTarget& target);
+
+// The exact test described above. Exact rational arithmetic throughout; cost O(k) products for k points.
+bool wall_hides_exactly(const WallRectangle& wall, const RationalBox3& cell, const UmbraTarget& target);
+
+}  // namespace exactvis::region
