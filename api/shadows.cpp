@@ -31,7 +31,7 @@ ordered_json curve_json(const Scene& scene, const shadows::DiscontinuityCurve& c
   } else if (c.kind == Kind::EV) {
     g["vertex"] = c.vertex;
     g["edge"] = {c.edge[0], c.edge[1]};
-    g["light"] = c.light_vertex ? "vertex" : "edge";
+    g["light"] = c.blocker_blocker ? "none" : c.light_vertex ? "vertex" : "edge";
   } else {
     g["edges"] = ordered_json::array();
     for (const auto& e : c.edges) g["edges"].push_back({e[0], e[1]});
@@ -144,7 +144,9 @@ ordered_json shadows_json(const Scene& scene, const shadows::ShadowResult& res, 
       fj["light_fraction"] = f.fraction_value;
       fj["irradiance"] = f.irradiance;
       fj["light_fraction_exact"] = f.fraction_exact ? exact_json(f.fraction) : ordered_json(nullptr);
-      fj["area_uv"] = exact_json(f.area_uv);
+      fj["area_uv"] = f.area_exact ? exact_json(f.area_uv) : ordered_json(f.area_uv_value);
+      fj["area_exact"] = f.area_exact;
+      fj["conic_bounded"] = f.conic_bounded;
       fj["blockers"] = f.blockers;
       fj["backprojection"] = visible_json(scene, f.visible);
       rj["faces"].push_back(fj);
@@ -162,9 +164,16 @@ ordered_json shadows_json(const Scene& scene, const shadows::ShadowResult& res, 
   j["light"] = {{"triangles", lt}};
   j["stats"] = {{"ev_events", res.stats.ev_events},
                 {"eee_events", res.stats.eee_events},
+                {"blocker_ev_events", res.stats.blocker_ev_events},
                 {"backprojections", res.stats.backprojections},
+                {"conic_arcs", res.stats.conic_arcs},
+                {"chord_curves", res.stats.chord_curves},
+                {"arrangement_failures", res.stats.arrangement_failures},
+                {"trimmed_arcs", res.stats.trimmed_arcs},
+                {"uncertified_samples", res.stats.uncertified_samples},
                 {"seconds_ev", res.stats.seconds_ev},
                 {"seconds_eee", res.stats.seconds_eee},
+                {"seconds_blocker_ev", res.stats.seconds_blocker_ev},
                 {"seconds_events", res.stats.seconds_events},
                 {"seconds_receivers", res.stats.seconds_receivers}};
   return j;

@@ -39,8 +39,9 @@ int main(int argc, char** argv) {
   if (threads > 0) gc = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, threads);
   std::printf("kind %s, seed %llu, vertex irradiance %s\n", kind.c_str(), static_cast<unsigned long long>(seed),
               vertex_irradiance ? "yes" : "no");
-  std::printf("%8s %9s %7s %7s %5s %6s %7s %6s %6s %8s %8s %9s %8s %7s\n", "tris", "receivers", "EVcurv", "EEEcurv",
-              "D0", "faces", "umbra", "ev_s", "eee_s", "events_s", "recv_s", "ms/recv", "recv/ev", "growth");
+  std::printf("%8s %9s %7s %6s %7s %5s %6s %7s %5s %5s %6s %6s %6s %8s %8s %9s %8s %7s\n", "tris", "receivers",
+              "EVcurv", "BBcurv", "EEEcurv", "D0", "faces", "umbra", "arcs", "fail", "ev_s", "bb_s", "eee_s",
+              "events_s", "recv_s", "ms/recv", "recv/ev", "growth");
   double prev_n = 0, prev_t = 0;
   for (const auto& item : exactvis::bench::split(sizes)) {
     const long n = std::stol(item);
@@ -57,11 +58,11 @@ int main(int argc, char** argv) {
     const double t0 = exactvis::bench::now();
     const auto res = exactvis::shadows::compute_shadows(scene, opt);
     const double total = exactvis::bench::now() - t0;
-    std::uint64_t ev = 0, eee = 0, d0 = 0, faces = 0, umbra = 0;
+    std::uint64_t ev = 0, bb = 0, eee = 0, d0 = 0, faces = 0, umbra = 0;
     for (const auto& r : res.receivers) {
       for (const auto& c : r.curves) {
         if (c.order == 0) ++d0;
-        else if (c.kind == exactvis::shadows::DiscontinuityCurve::Kind::EV) ++ev;
+        else if (c.kind == exactvis::shadows::DiscontinuityCurve::Kind::EV) ++(c.blocker_blocker ? bb : ev);
         else ++eee;
       }
       for (const auto& f : r.faces) {
@@ -70,9 +71,11 @@ int main(int argc, char** argv) {
       }
     }
     const double growth = prev_n > 0 ? std::log(total / prev_t) / std::log(n / prev_n) : 0;
-    std::printf("%8ld %9zu %7llu %7llu %5llu %6llu %7llu %6.2f %6.2f %8.2f %8.2f %9.2f %8.2f %7s\n", n,
-                res.receivers.size(), (unsigned long long)ev, (unsigned long long)eee, (unsigned long long)d0,
-                (unsigned long long)faces, (unsigned long long)umbra, res.stats.seconds_ev, res.stats.seconds_eee,
+    std::printf("%8ld %9zu %7llu %6llu %7llu %5llu %6llu %7llu %5llu %5llu %6.2f %6.2f %6.2f %8.2f %8.2f %9.2f %8.2f %7s\n",
+                n, res.receivers.size(), (unsigned long long)ev, (unsigned long long)bb, (unsigned long long)eee,
+                (unsigned long long)d0, (unsigned long long)faces, (unsigned long long)umbra,
+                (unsigned long long)res.stats.conic_arcs, (unsigned long long)res.stats.arrangement_failures,
+                res.stats.seconds_ev - res.stats.seconds_blocker_ev, res.stats.seconds_blocker_ev, res.stats.seconds_eee,
                 res.stats.seconds_events, res.stats.seconds_receivers,
                 1000 * res.stats.seconds_receivers / std::max<std::size_t>(1, res.receivers.size()),
                 res.stats.seconds_receivers / std::max(1e-9, res.stats.seconds_events),

@@ -16,12 +16,14 @@ using Edge = std::array<int, 2>;
 struct LightFeatures {
   std::set<int> vertices;
   std::set<Edge> edges;
+  std::set<std::int64_t> ids;  // stable ids of the light triangles
 };
 
 LightFeatures light_features(const Scene& scene, const std::vector<int>& light) {
   LightFeatures f;
   for (int li : light) {
     const auto& t = scene.triangles[li];
+    f.ids.insert(t.id);
     for (int k = 0; k < 3; ++k) {
       f.vertices.insert(t.v[k]);
       f.edges.insert({std::min(t.v[k], t.v[(k + 1) % 3]), std::max(t.v[k], t.v[(k + 1) % 3])});
@@ -112,10 +114,15 @@ std::map<std::int64_t, std::vector<DiscontinuityCurve>> event_curves(const Scene
   for (const auto& e : ev.events) {
     const bool lv = lf.vertices.count(e.vertex) > 0;
     const bool le = lf.edges.count({e.edge[0], e.edge[1]}) > 0;
-    if (lv == le) continue;  // both on the light, or neither (not light-restricted)
+    if (lv && le) continue;  // both on the light
     const Vec3<Exact> V = rational_point(scene.vertices[e.vertex]);
     for (const auto& iv : e.intervals) {
-      const std::int64_t rid = lv ? iv.front_object : iv.back_object;
+      std::int64_t rid = lv ? iv.front_object : iv.back_object;
+      if (!lv && !le) {  // blocker-blocker: the line ends on the light at one end, on the receiver at the other
+        const bool fl = lf.ids.count(iv.front_object) > 0, bl = lf.ids.count(iv.back_object) > 0;
+        if (fl == bl) continue;
+        rid = fl ? iv.back_object : iv.front_object;
+      }
       const auto fr = frames.find(rid);
       if (rid < 0 || fr == frames.end()) continue;
       const Exact t0 = rational_parameter(iv.t0), t1 = rational_parameter(iv.t1);
@@ -129,6 +136,7 @@ std::map<std::int64_t, std::vector<DiscontinuityCurve>> event_curves(const Scene
       c.vertex = e.vertex;
       c.edge = e.edge;
       c.light_vertex = lv;
+      c.blocker_blocker = !lv && !le;
       c.t0 = iv.t0;
       c.t1 = iv.t1;
       c.points = {*x0, *x1};
@@ -194,6 +202,14 @@ std::map<std::int64_t, std::vector<DiscontinuityCurve>> event_curves(const Scene
           c.t0 = k == 0 ? iv.t0 : RootNumber(q0 + Exact(k, n) * (q1 - q0));
           c.t1 = last == n ? iv.t1 : RootNumber(q0 + Exact(last, n) * (q1 - q0));
           for (int j = k; j <= last; ++j) c.points.push_back(*on_r[j]);
+          if (last == k + 1) {
+            // A third exact conic point between the two (the arc's orientation needs one): the line at the
+            // middle parameter, on the same surface; by continuity its plane point lies on the arc between.
+            const Exact tm = q0 + Exact(2 * k + 1, 2 * n) * (q1 - q0);
+            if (const auto s = eee_generator_segment(scene, e, tm))
+              if (const auto x = line_meets_plane(s->front, s->front + s->direction, fr->second))
+                c.points.insert(c.points.begin() + 1, *x);
+          }
           c.ends_exact = k == 0 && e0 && last == n && e1;
           c.ends = {to_double(c.points.front()), to_double(c.points.back())};
           c.conic = conic;

@@ -3,7 +3,8 @@
 //
 // From the light-restricted events (events/): an EV free interval of (V, E) with V a light vertex and E not a
 // light edge reaches, beyond E, its front object; with E a light edge and V not a light vertex, its back
-// object behind V. EV intervals are split where these objects change, so the whole open interval ends on one
+// object behind V; with neither on the light (blocker-blocker events, shadows/blocker_events.hpp, passed in
+// the same EvResult), the object at the end that is not a light triangle. EV intervals are split where these objects change, so the whole open interval ends on one
 // receiver R and its curve is the segment from L(t0) to L(t1) intersected with R's plane (exact, rational).
 // An EEE interval with a light edge whose generator point is the outermost one on one side reaches the object
 // beyond the other side; its curve is the conic where the ruled event surface meets R's plane, kept where the
@@ -39,7 +40,8 @@ struct DiscontinuityCurve {
   std::array<int, 2> edge{-1, -1};
   std::array<std::array<int, 2>, 3> edges{};
   std::int64_t blocker = -1;
-  bool light_vertex = false;       // EV: V is on the light (else E is)
+  bool light_vertex = false;       // EV: V is on the light (else E is, unless blocker_blocker)
+  bool blocker_blocker = false;    // EV: neither V nor E is on the light (shadows/blocker_events.hpp)
   int light_edge = -1;             // EEE: which generator edge is on the light
   RootNumber t0 = 0, t1 = 0;       // the event family's parameter range of the curve (not for D0)
   // Exact points on the curve in order: EV and D0 the two ends; EEE the points of lines at rational

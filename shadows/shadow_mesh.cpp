@@ -3,6 +3,8 @@
 #include "events/eee_enumeration.hpp"
 #include "events/ev_events.hpp"
 #include "kernel/triangle_index.hpp"
+#include "shadows/blocker_events.hpp"
+#include "shadows/conic_arrangement.hpp"
 #include "shadows/point_irradiance.hpp"
 #include "util/for_each_index.hpp"
 #include "util/progress_bar.hpp"
@@ -33,20 +35,31 @@ ShadowResult compute_shadows(const Scene& scene, const ShadowOptions& options) {
   eeo.light_triangles = options.light;
   eeo.progress = options.progress;
   eeo.parallel = options.parallel;
-  const EvResult ev = enumerate_ev_events(scene, evo);
+  EvResult ev = enumerate_ev_events(scene, evo);
+  res.stats.ev_events = ev.events.size();
+  if (options.blocker_events) {
+    BlockerEvOptions bo;
+    bo.parallel = options.parallel;
+    bo.progress = options.progress;
+    const auto before_bb = std::chrono::steady_clock::now();
+    EvResult bb = blocker_ev_events(scene, options.light, bo);
+    res.stats.seconds_blocker_ev = std::chrono::duration<double>(std::chrono::steady_clock::now() - before_bb).count();
+    res.stats.blocker_ev_events = bb.events.size();
+    for (auto& e : bb.events) ev.events.push_back(std::move(e));
+  }
   const auto after_ev = std::chrono::steady_clock::now();
   const EeeResult eee = enumerate_eee_events(scene, eeo);
   const auto after_eee = std::chrono::steady_clock::now();
   res.stats.seconds_ev = std::chrono::duration<double>(after_ev - start).count();
   res.stats.seconds_eee = std::chrono::duration<double>(after_eee - after_ev).count();
-  res.stats.ev_events = ev.events.size();
   res.stats.eee_events = eee.events.size();
   auto curves = event_curves(scene, index, options.light, ev, eee, receivers, options.eee);
   const auto mid = std::chrono::steady_clock::now();
   res.stats.seconds_events = std::chrono::duration<double>(mid - start).count();
 
   res.receivers.resize(receivers.size());
-  std::atomic<std::uint64_t> backprojections{0};
+  std::atomic<std::uint64_t> backprojections{0}, conic_arcs{0}, chord_curves{0}, arrangement_failures{0}, trimmed_arcs{0},
+      uncertified_samples{0};
   ProgressBar bar("shadows: receivers", receivers.size(), options.progress);
   for_each_index(receivers.size(), options.parallel, 1, [&](std::size_t i) {
     ReceiverShadows& out = res.receivers[i];
@@ -62,10 +75,64 @@ ShadowResult compute_shadows(const Scene& scene, const ShadowOptions& options) {
       polylines.push_back(std::move(pl));
     }
     out.mesh = receiver_faces(polylines);
-    for (const auto& f : out.mesh.faces) {
+    std::vector<ArrangementCurve> arcs;
+    for (std::size_t k = 0; k < out.curves.size(); ++k) {
+      ArrangementCurve a;
+      a.points = polylines[k];
+      if (out.curves[k].kind == DiscontinuityCurve::Kind::EEE) a.conic = out.curves[k].conic;
+      arcs.push_back(std::move(a));
+    }
+    std::vector<std::array<Exact, 2>> queries;
+    for (const auto& f : out.mesh.faces) queries.push_back(f.sample);
+    ReceiverArrangement arr = receiver_arrangement(arcs, queries);
+    // A triangulation face not located in a face inside the receiver (CGAL 5.5's conic point location can
+    // miss) makes the display mapping impossible: treated as a failure of the arrangement.
+    for (int qf : arr.query_faces)
+      if (qf < 0) arr.failed = true;
+    if (arr.failed) {
+      // CGAL's conic traits failed (see conic_arrangement.hpp): the faces are the triangulation's, EEE arcs
+      // as chords (exact chord-polygon areas; each sample's class is exact for the sample).
+      out.arrangement_failed = true;
+      ++arrangement_failures;
+      arr = ReceiverArrangement{};
+      for (std::size_t k = 0; k < out.mesh.faces.size(); ++k) {
+        ReceiverArrangement::Face f;
+        f.sample = out.mesh.faces[k].sample;
+        f.area_uv = CGAL::to_double(out.mesh.faces[k].area_uv);
+        arr.faces.push_back(f);
+        arr.query_faces.push_back(static_cast<int>(k));
+      }
+    }
+    out.conic_arcs = arr.conic_arcs;
+    out.chord_curves = arr.chord_curves;
+    conic_arcs += arr.conic_arcs;
+    trimmed_arcs += arr.trimmed_arcs;
+    uncertified_samples += arr.uncertified_samples + arr.uncertified_lenses;
+    chord_curves += arr.chord_curves;
+    // Without conic arcs the triangulation's constraints are the arrangement's curves: its faces are the
+    // arrangement's, one to one, and give the exact areas.
+    std::vector<int> cdt_of(arr.faces.size(), -1);
+    bool one_to_one = (arr.conic_arcs == 0 || out.arrangement_failed) && arr.faces.size() == out.mesh.faces.size();
+    for (std::size_t k = 0; k < arr.query_faces.size(); ++k) {
+      const int af = arr.query_faces[k];
+      if (cdt_of[af] >= 0) {
+        one_to_one = false;
+        continue;
+      }
+      cdt_of[af] = static_cast<int>(k);
+    }
+    for (auto& tf : out.mesh.triangle_face) tf = arr.query_faces[tf];
+    for (std::size_t fi = 0; fi < arr.faces.size(); ++fi) {
+      const auto& f = arr.faces[fi];
       FaceShading s;
-      s.area_uv = f.area_uv;
-      s.area = CGAL::to_double(f.area_uv) * frame.area_scale();
+      s.area_uv_value = f.area_uv;
+      s.conic_bounded = f.conic_bounded;
+      if (one_to_one) {
+        s.area_exact = true;
+        s.area_uv = out.mesh.faces[cdt_of[fi]].area_uv;
+        s.area_uv_value = CGAL::to_double(s.area_uv);
+      }
+      s.area = s.area_uv_value * frame.area_scale();
       s.sample = frame.to_3d(f.sample[0], f.sample[1]);
       Backprojection bp = backproject(scene, index, options.light, s.sample);
       s.light_class = bp.light_class;
@@ -89,6 +156,11 @@ ShadowResult compute_shadows(const Scene& scene, const ShadowOptions& options) {
     bar.advance();
   });
   res.stats.backprojections = backprojections.load();
+  res.stats.conic_arcs = conic_arcs.load();
+  res.stats.chord_curves = chord_curves.load();
+  res.stats.arrangement_failures = arrangement_failures.load();
+  res.stats.trimmed_arcs = trimmed_arcs.load();
+  res.stats.uncertified_samples = uncertified_samples.load();
   res.stats.seconds_receivers =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - mid).count();
   return res;

@@ -1,7 +1,8 @@
 #pragma once
 // The exact discontinuity mesh of area lights on receiver triangles (docs/theory.md section 11): per receiver,
-// its discontinuity curves (shadows/discontinuity_curves.hpp), the faces they cut and the conforming
-// triangulation (shadows/receiver_faces.hpp), each face classified umbra / penumbra / lit by the exact
+// its discontinuity curves (shadows/discontinuity_curves.hpp), the faces of their exact arrangement of
+// segments and conic arcs (shadows/conic_arrangement.hpp), a conforming triangulation for display
+// (shadows/receiver_faces.hpp, EEE arcs as chords), each face classified umbra / penumbra / lit by the exact
 // backprojection at its sample point (shadows/backprojection.hpp) with the light fraction and irradiance
 // there (shadows/point_irradiance.hpp), and the irradiance at every mesh vertex.
 #include "kernel/number_types.hpp"
@@ -10,6 +11,7 @@
 #include "shadows/discontinuity_curves.hpp"
 #include "shadows/receiver_faces.hpp"
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -21,13 +23,18 @@ struct ShadowOptions {
   bool vertex_irradiance = true;          // backproject at every mesh vertex (for the mesh files)
   bool progress = false;
   bool parallel = true;                   // oneTBB over receivers
+  bool blocker_events = true;             // include blocker-blocker EV events (shadows/blocker_events.hpp)
   EeeCurveOptions eee;
 };
 
 struct FaceShading {
   LightClass light_class = LightClass::Lit;
   double area = 0;                        // 3D area (double: the frame's scale is a square root)
-  Exact area_uv = 0;                      // exact area in the receiver's (u, v) frame
+  double area_uv_value = 0;               // area in the receiver's (u, v) frame
+  // Exact (u, v) area: set when no face of the receiver is bounded by a conic arc (`area_exact`).
+  bool area_exact = false;
+  Exact area_uv = 0;
+  bool conic_bounded = false;             // some boundary edge of the face is a conic arc
   Vec3<Exact> sample;                     // strictly inside the face
   bool fraction_exact = true;
   Exact fraction = 1;
@@ -40,17 +47,31 @@ struct FaceShading {
 struct ReceiverShadows {
   std::int64_t triangle = -1;             // index into Scene::triangles
   std::vector<DiscontinuityCurve> curves;
-  ReceiverFaces mesh;                     // (u, v) triangulation and faces
-  std::vector<FaceShading> faces;         // parallel to mesh.faces
+  // (u, v) triangulation for display; its triangle_face holds, for each triangle, the index into `faces` of
+  // the arrangement face containing its triangulation face's sample (EEE arcs are chords in the mesh).
+  ReceiverFaces mesh;
+  std::vector<FaceShading> faces;         // the bounded faces of the exact arrangement of the curves
+  std::size_t conic_arcs = 0;             // EEE curves in the arrangement as exact conic arcs
+  std::size_t chord_curves = 0;           // EEE curves entered as chords (degenerate conic, see conic_arrangement)
+  // CGAL's conic arrangement failed on this receiver (conic_arrangement.hpp): `faces` are then the
+  // triangulation's faces (EEE arcs as chords), as before the arrangement existed.
+  bool arrangement_failed = false;
   std::vector<Vec3<Exact>> vertices;      // mesh vertices in 3D (exact)
   std::vector<double> vertex_irradiance;  // empty unless ShadowOptions::vertex_irradiance
 };
 
 struct ShadowStats {
   std::uint64_t ev_events = 0, eee_events = 0;
+  std::uint64_t blocker_ev_events = 0;    // blocker-blocker EV events with a kept interval
   std::uint64_t backprojections = 0;
-  double seconds_events = 0, seconds_receivers = 0;  // events: EV + EEE enumeration + curves on receivers
-  double seconds_ev = 0, seconds_eee = 0;
+  std::uint64_t conic_arcs = 0, chord_curves = 0;    // over all receivers
+  std::uint64_t arrangement_failures = 0;            // receivers whose conic arrangement failed
+  // Arcs whose end pieces entered as chords after a first CGAL failure, and faces (plus lenses) without a
+  // certified sample (conic_arrangement.hpp).
+  std::uint64_t trimmed_arcs = 0, uncertified_samples = 0;
+  double seconds_events = 0, seconds_receivers = 0;  // events: EV (light and blocker-blocker) + EEE + curves
+  double seconds_ev = 0, seconds_eee = 0;  // seconds_ev includes seconds_blocker_ev
+  double seconds_blocker_ev = 0;
 };
 
 struct ShadowResult {

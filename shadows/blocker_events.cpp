@@ -1,0 +1,104 @@
+#include "shadows/blocker_events.hpp"
+
+#include "events/ev_interval_split.hpp"
+#include "events/scene_adjacency.hpp"
+#include "events/tangency.hpp"
+#include "kernel/predicates.hpp"
+#include "kernel/triangle_index.hpp"
+#include "util/for_each_index.hpp"
+#include "util/progress_bar.hpp"
+
+#include <algorithm>
+#include <set>
+
+namespace exactvis::shadows {
+namespace {
+
+// Whether the light triangle (a, b, c) meets the plane of (V, A, B) (closed): not all corners strictly on
+// one side. Exact (filtered orient3d).
+bool plane_meets_triangle(const Point3& v, const Point3& a, const Point3& b, const std::array<Point3, 3>& t) {
+  int pos = 0, neg = 0;
+  for (const auto& p : t) {
+    const Sign s = orient3d(v, a, b, p);
+    if (s == Sign::Positive) ++pos;
+    else if (s == Sign::Negative) ++neg;
+    else return true;
+  }
+  return pos > 0 && neg > 0;
+}
+
+}  // namespace
+
+EvResult blocker_ev_events(const Scene& scene, const std::vector<int>& light, const BlockerEvOptions& options) {
+  const SceneAdjacency adj = build_scene_adjacency(scene);
+  const TriangleIndex index(scene);
+  const Box3 box = bounding_box(scene);
+  const int nv = static_cast<int>(scene.vertices.size());
+  std::vector<char> light_vertex(nv, 0);
+  std::set<std::int64_t> light_ids;
+  std::vector<std::array<Point3, 3>> light_corners;
+  for (int ti : light) {
+    const auto& t = scene.triangles.at(ti);
+    for (int k = 0; k < 3; ++k) light_vertex[t.v[k]] = 1;
+    light_ids.insert(t.id);
+    light_corners.push_back({scene.corner(t, 0), scene.corner(t, 1), scene.corner(t, 2)});
+  }
+  std::vector<char> light_edge(adj.edges.size(), 0);
+  for (std::size_t ei = 0; ei < adj.edges.size(); ++ei)
+    for (int ti : adj.edges[ei].triangles)
+      if (std::find(light.begin(), light.end(), ti) != light.end()) light_edge[ei] = 1;
+
+  std::vector<std::vector<EvEvent>> per_vertex(nv);
+  std::vector<EvStats> per_vertex_stats(nv);
+  ProgressBar bar("blocker EV events", static_cast<std::uint64_t>(nv), options.progress);
+  auto work = [&](int v) {
+    if (light_vertex[v] || adj.vertex_triangles[v].empty()) {
+      bar.advance();
+      return;
+    }
+    const Point3& V = scene.vertices[v];
+    std::optional<VertexFan> fan;
+    EvStats& st = per_vertex_stats[v];
+    for (int ei = 0; ei < static_cast<int>(adj.edges.size()); ++ei) {
+      if (light_edge[ei]) continue;
+      const auto& e = adj.edges[ei].v;
+      if (e[0] == v || e[1] == v) continue;
+      const Point3& A = scene.vertices[e[0]];
+      const Point3& B = scene.vertices[e[1]];
+      if (collinear(V, A, B)) continue;
+      bool meets = false;
+      for (const auto& t : light_corners)
+        if (plane_meets_triangle(V, A, B, t)) {
+          meets = true;
+          break;
+        }
+      if (!meets) continue;
+      if (!fan) fan = build_vertex_fan(scene, adj, v);
+      auto ev = ev_event(scene, adj, index, *fan, ei, &st);
+      if (!ev) continue;
+      std::vector<CriticalInterval> kept;
+      for (const auto& iv : ev->intervals)
+        for (auto& piece : split_ev_interval(scene, adj, index, box, ev->vertex, ev->edge, iv)) {
+          const bool front_light = light_ids.count(piece.front_object) > 0;
+          const bool back_light = light_ids.count(piece.back_object) > 0;
+          const std::int64_t other = front_light ? piece.back_object : piece.front_object;
+          if (front_light != back_light && other >= 0) kept.push_back(std::move(piece));
+        }
+      if (kept.empty()) continue;
+      ev->intervals = std::move(kept);
+      per_vertex[v].push_back(std::move(*ev));
+    }
+    bar.advance();
+  };
+  for_each_index(static_cast<std::size_t>(nv), options.parallel, 1, [&](std::size_t v) { work(static_cast<int>(v)); });
+  EvResult result;
+  for (int v = 0; v < nv; ++v) {
+    for (auto& ev : per_vertex[v]) result.events.push_back(std::move(ev));
+    result.stats.pairs += per_vertex_stats[v].pairs;
+    result.stats.tangent_pairs += per_vertex_stats[v].tangent_pairs;
+    result.stats.occluder_tests += per_vertex_stats[v].occluder_tests;
+  }
+  return result;
+}
+
+}  // namespace exactvis::shadows
