@@ -172,7 +172,7 @@ TEST(EventsCli, EeeEventsJsonShape) {
 
   const auto text = run("events " + skew_bars_file().string());
   ASSERT_EQ(text.status, 0);
-  EXPECT_NE(text.out.find("EEE edges"), std::string::npos);
+  EXPECT_NE(text.out.find("EEE events: "), std::string::npos);
 }
 
 TEST(EventsCli, BadInputIsAOneLineErrorAndNonZeroExit) {
