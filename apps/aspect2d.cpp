@@ -123,6 +123,16 @@ int run(const Aspect2DOptions& o) {
     }
     for (const auto& b : g.boundaries) svg_segment(doc, {b[0].ax, b[0].ay}, {b[1].ax, b[1].ay}, "#404040", 0.4);
     svg_scene(doc, g.framed);
+    // Each region's id at the exact interior sample of its first face (rounded for drawing).
+    std::vector<bool> labelled(g.regions.size(), false);
+    for (const auto& f : g.faces) {
+      if (f.region < 0 || labelled[f.region]) continue;
+      labelled[f.region] = true;
+      svg_label(doc, {f.sample.ax, f.sample.ay}, std::to_string(f.region));
+    }
+    svg_legend(doc, SvgLegendEntry::Swatch::Area, svg_colour(0), "aspect region (one colour each, id as in --json)");
+    svg_legend(doc, SvgLegendEntry::Swatch::Line, "#404040", "visual event boundary between regions");
+    svg_legend(doc, SvgLegendEntry::Swatch::Area, "#9a9a9a", "obstacle");
     outputs.write(o.svg, [&](const std::string& temp) { return svg_write(doc, temp), true; });
   }
   if (!o.vtp.empty()) {

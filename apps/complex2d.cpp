@@ -59,6 +59,12 @@ int run(const Complex2DOptions& o) {
       svg_segment(doc, {pb.ax, pb.ay}, end_or_far(b.end_b, pa, pb, far), colour, 0.6, true);
       svg_segment(doc, {pa.ax, pa.ay}, {pb.ax, pb.ay}, colour, 1.5);
     }
+    using Swatch = SvgLegendEntry::Swatch;
+    svg_legend(doc, Swatch::Area, "#9a9a9a", "obstacle");
+    svg_legend(doc, Swatch::Line, "#1f77b4", "outer bitangent (free segment)");
+    svg_legend(doc, Swatch::Line, "#d62728", "separating bitangent (free segment)");
+    svg_legend(doc, Swatch::Dashed, "#1f77b4", "maximal free extension (outer)");
+    svg_legend(doc, Swatch::Dashed, "#d62728", "maximal free extension (separating)");
     outputs.write(o.svg, [&](const std::string& temp) { return svg_write(doc, temp), true; });
   }
   if (!o.vtp.empty()) {

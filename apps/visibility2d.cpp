@@ -87,6 +87,10 @@ int run_segments(const Visibility2DOptions& o) {
     svg_segment(doc, {T[0].ax, T[0].ay}, {T[1].ax, T[1].ay}, "#2ca02c", 3);
     if (r.visible)
       svg_segment(doc, {r.witness_s.ax, r.witness_s.ay}, {r.witness_t.ax, r.witness_t.ay}, "#d62728", 1.5);
+    svg_legend(doc, SvgLegendEntry::Swatch::Area, "#9a9a9a", "obstacle");
+    svg_legend(doc, SvgLegendEntry::Swatch::Line, "#1f77b4", "source segment");
+    svg_legend(doc, SvgLegendEntry::Swatch::Line, "#2ca02c", "target segment");
+    svg_legend(doc, SvgLegendEntry::Swatch::Line, "#d62728", "witness segment (exactly free)");
     outputs.write(o.svg, [&](const std::string& temp) { return svg_write(doc, temp), true; });
   }
   outputs.commit();
@@ -146,6 +150,9 @@ int run(const Visibility2DOptions& o) {
     svg_rings(doc, {ring}, "#ffd54f", "#e6a100", 0.7);
     svg_scene(doc, scene);
     svg_point(doc, {q.ax, q.ay}, "#d62728");
+    svg_legend(doc, SvgLegendEntry::Swatch::Area, "#ffd54f", "visibility polygon");
+    svg_legend(doc, SvgLegendEntry::Swatch::Area, "#9a9a9a", "obstacle");
+    svg_legend(doc, SvgLegendEntry::Swatch::Point, "#d62728", "viewpoint");
     outputs.write(o.svg, [&](const std::string& temp) { return svg_write(doc, temp), true; });
   }
   outputs.commit();

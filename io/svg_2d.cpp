@@ -78,6 +78,22 @@ void svg_point(SvgDocument2D& doc, std::array<double, 2> p, const std::string& f
                       "\" fill=\"" + fill + "\"/>");
 }
 
+void svg_label(SvgDocument2D& doc, std::array<double, 2> p, const std::string& text) {
+  doc.labels.push_back({p, text});
+}
+
+void svg_legend(SvgDocument2D& doc, SvgLegendEntry::Swatch swatch, const std::string& colour, const std::string& label) {
+  doc.legend.push_back({swatch, colour, label});
+}
+
+double svg_tick_step(double span) {
+  if (!(span > 0) || !std::isfinite(span)) return 1;
+  const double raw = span / 5, p = std::pow(10.0, std::floor(std::log10(raw)));
+  for (const double m : {1.0, 2.0, 5.0, 10.0})
+    if (m * p >= raw) return m * p;
+  return 10 * p;
+}
+
 void svg_scene(SvgDocument2D& doc, const Scene2D& s) {
   for (int obj = 0; obj < s.num_objects; ++obj) {
     std::vector<std::vector<std::array<double, 2>>> rings;
@@ -100,7 +116,71 @@ void svg_write(const SvgDocument2D& d, const std::string& path) {
   out << "<rect x=\"" << num(d.lo_x) << "\" y=\"" << num(-d.hi_y) << "\" width=\"" << num(w) << "\" height=\""
       << num(h) << "\" fill=\"white\"/>\n<g transform=\"scale(1,-1)\">\n";
   for (const auto& item : d.items) out << item << "\n";
-  out << "</g>\n</svg>\n";
+  out << "</g>\n";
+  // Upright overlays in SVG coordinates (y down): labels, axes, legend. Sizes in screen-pixel units.
+  const double u = unit(d), font = 11 * u;
+  auto text = [&](double x, double y, const std::string& t, const char* anchor) {
+    out << "<text x=\"" << num(x) << "\" y=\"" << num(y) << "\" font-size=\"" << num(font)
+        << "\" font-family=\"sans-serif\" text-anchor=\"" << anchor << "\">" << t << "</text>\n";
+  };
+  for (const auto& [p, t] : d.labels) text(to_svg(d, p[0]), -to_svg(d, p[1]) + 0.35 * font, t, "middle");
+  if (d.axes) {
+    // Ticks along the bottom and left edges, at a 1-2-5 step of the SVG units (world units unless the
+    // picture is scaled down for huge coordinates), labelled in world units; at most 12 per axis.
+    const std::string style = "\" stroke=\"#505050\" stroke-width=\"" + num(u) + "\"/>\n";
+    out << "<line x1=\"" << num(d.lo_x) << "\" y1=\"" << num(-d.lo_y) << "\" x2=\"" << num(d.hi_x) << "\" y2=\""
+        << num(-d.lo_y) << style << "<line x1=\"" << num(d.lo_x) << "\" y1=\"" << num(-d.lo_y) << "\" x2=\""
+        << num(d.lo_x) << "\" y2=\"" << num(-d.hi_y) << style;
+    auto world = [&](double t) {
+      const double w = t / d.scale;
+      return std::isfinite(w) ? num(std::abs(t) < 1e-12 * (d.hi_x - d.lo_x + d.hi_y - d.lo_y) ? 0.0 : w) : std::string();
+    };
+    const double sx = svg_tick_step(d.hi_x - d.lo_x), sy = svg_tick_step(d.hi_y - d.lo_y);
+    int n = 0;
+    for (double x = std::ceil(d.lo_x / sx) * sx; x <= d.hi_x && n < 12; x += sx, ++n) {
+      out << "<line x1=\"" << num(x) << "\" y1=\"" << num(-d.lo_y) << "\" x2=\"" << num(x) << "\" y2=\""
+          << num(-d.lo_y - 5 * u) << style;
+      text(x, -d.lo_y - 7 * u, world(x), "middle");
+    }
+    n = 0;
+    for (double y = std::ceil(d.lo_y / sy) * sy; y <= d.hi_y && n < 12; y += sy, ++n) {
+      out << "<line x1=\"" << num(d.lo_x) << "\" y1=\"" << num(-y) << "\" x2=\"" << num(d.lo_x + 5 * u) << "\" y2=\""
+          << num(-y) << style;
+      text(d.lo_x + 7 * u, -y + 0.35 * font, world(y), "start");
+    }
+  }
+  if (!d.legend.empty()) {
+    const double x0 = d.lo_x + 12 * u, y0 = -d.hi_y + 10 * u, row = 16 * u;
+    std::size_t longest = 0;
+    for (const auto& e : d.legend) longest = std::max(longest, e.label.size());
+    out << "<rect x=\"" << num(x0 - 4 * u) << "\" y=\"" << num(y0 - 4 * u) << "\" width=\""
+        << num(30 * u + 0.6 * font * static_cast<double>(longest)) << "\" height=\""
+        << num(row * static_cast<double>(d.legend.size()) + 6 * u)
+        << "\" fill=\"white\" fill-opacity=\"0.85\" stroke=\"#808080\" stroke-width=\"" << num(0.5 * u) << "\"/>\n";
+    for (std::size_t i = 0; i < d.legend.size(); ++i) {
+      const SvgLegendEntry& e = d.legend[i];
+      const double y = y0 + row * static_cast<double>(i);
+      switch (e.swatch) {
+        case SvgLegendEntry::Swatch::Area:
+          out << "<rect x=\"" << num(x0) << "\" y=\"" << num(y) << "\" width=\"" << num(16 * u) << "\" height=\""
+              << num(10 * u) << "\" fill=\"" << e.colour << "\" stroke=\"#303030\" stroke-width=\"" << num(0.5 * u)
+              << "\"/>\n";
+          break;
+        case SvgLegendEntry::Swatch::Point:
+          out << "<circle cx=\"" << num(x0 + 8 * u) << "\" cy=\"" << num(y + 5 * u) << "\" r=\"" << num(3 * u)
+              << "\" fill=\"" << e.colour << "\"/>\n";
+          break;
+        default:
+          out << "<line x1=\"" << num(x0) << "\" y1=\"" << num(y + 5 * u) << "\" x2=\"" << num(x0 + 16 * u)
+              << "\" y2=\"" << num(y + 5 * u) << "\" stroke=\"" << e.colour << "\" stroke-width=\"" << num(1.5 * u)
+              << "\""
+              << (e.swatch == SvgLegendEntry::Swatch::Dashed ? " stroke-dasharray=\"" + num(3 * u) + "\"" : "")
+              << "/>\n";
+      }
+      text(x0 + 22 * u, y + 9 * u, e.label, "start");
+    }
+  }
+  out << "</svg>\n";
   out.close();
   if (!out) throw std::runtime_error(path + ": cannot write (" + std::strerror(errno) + ")");
 }

@@ -332,3 +332,49 @@ TEST(Cli2D, Aspect2dProgressAndCostWarning) {
   r = d.sh("/usr/bin/script -qec '" + std::string(EXACTVIS_BINARY) + " aspect2d -q " + small + "' /dev/null");
   EXPECT_EQ(r.out.find("aspect2d: faces"), std::string::npos) << r.out;
 }
+
+namespace {
+std::string slurp_file(const std::string& p) {
+  std::ifstream in(p);
+  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+// The texts of the picture's <text> elements, in order.
+std::vector<std::string> svg_texts(const std::string& svg) {
+  std::vector<std::string> out;
+  for (std::size_t i = svg.find("<text"); i != std::string::npos; i = svg.find("<text", i + 1)) {
+    const std::size_t a = svg.find('>', i) + 1, b = svg.find("</text>", a);
+    out.push_back(svg.substr(a, b - a));
+  }
+  return out;
+}
+}  // namespace
+
+// The 2D pictures explain themselves: a legend naming each colour and line style drawn, region ids for
+// aspect2d (one per region of the JSON, at a point inside it), and axes with world-unit ticks.
+TEST(Cli2D, PicturesHaveLegendsRegionIdsAndAxes) {
+  ASSERT_TRUE(std::filesystem::exists(EXACTVIS_BINARY));
+  const CliDir d;
+  const std::string scene =
+      d.write("two.json", R"({"polygons": [[[0,0],[2,0],[2,1],[0,1]], [[4,3],[6,3],[5,5]]]})");
+  const CliRun a = d.run("aspect2d " + scene + " --json --svg " + d.file("a.svg"));
+  ASSERT_EQ(a.status, 0) << a.err;
+  const auto j = nlohmann::json::parse(a.out);
+  const std::vector<std::string> at = svg_texts(slurp_file(d.file("a.svg")));
+  for (std::size_t r = 0; r < j["regions"].size(); ++r)
+    EXPECT_EQ(std::count(at.begin(), at.end(), std::to_string(r)) >= 1, true) << "region id " << r;
+  EXPECT_NE(std::find(at.begin(), at.end(), "visual event boundary between regions"), at.end());
+  EXPECT_NE(std::find(at.begin(), at.end(), "obstacle"), at.end());
+  // Axis ticks: a 1-2-5 step of the box; the x ticks of this scene (x in [0, 6]) include 0, 2 and 4 or 1..5.
+  EXPECT_NE(std::find(at.begin(), at.end(), "4"), at.end());
+
+  ASSERT_EQ(d.run("complex2d " + scene + " --svg " + d.file("c.svg")).status, 0);
+  const std::vector<std::string> ct = svg_texts(slurp_file(d.file("c.svg")));
+  for (const char* label : {"obstacle", "outer bitangent (free segment)", "separating bitangent (free segment)",
+                            "maximal free extension (outer)", "maximal free extension (separating)"})
+    EXPECT_NE(std::find(ct.begin(), ct.end(), label), ct.end()) << label;
+
+  ASSERT_EQ(d.run("visibility2d " + scene + " --from 3,0.5 --svg " + d.file("v.svg")).status, 0);
+  const std::vector<std::string> vt = svg_texts(slurp_file(d.file("v.svg")));
+  for (const char* label : {"visibility polygon", "obstacle", "viewpoint"})
+    EXPECT_NE(std::find(vt.begin(), vt.end(), label), vt.end()) << label;
+}
