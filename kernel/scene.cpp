@@ -17,6 +17,16 @@ Box3 intersection(const Box3& a, const Box3& b) {
           {std::min(a.hi.x, b.hi.x), std::min(a.hi.y, b.hi.y), std::min(a.hi.z, b.hi.z)}};
 }
 
+Box3 triangle_box(const Scene& scene, const SceneTriangle& t) {
+  Box3 b{scene.corner(t, 0), scene.corner(t, 0)};
+  for (int c = 1; c < 3; ++c)
+    for (int k = 0; k < 3; ++k) {
+      b.lo[k] = std::min(b.lo[k], scene.corner(t, c)[k]);
+      b.hi[k] = std::max(b.hi[k], scene.corner(t, c)[k]);
+    }
+  return b;
+}
+
 Box3 bounding_box(const Scene& scene) {
   const double inf = std::numeric_limits<double>::infinity();
   Box3 b{{inf, inf, inf}, {-inf, -inf, -inf}};

@@ -42,6 +42,8 @@ struct Box3 {
 };
 
 Box3 bounding_box(const Scene& scene);
+// The bounding box of one triangle's corners.
+Box3 triangle_box(const Scene& scene, const SceneTriangle& t);
 
 // The common part of two boxes (empty() if they do not overlap).
 Box3 intersection(const Box3& a, const Box3& b);

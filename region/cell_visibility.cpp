@@ -8,11 +8,15 @@
 
 namespace exactvis::region {
 
+void check_thread_count(int threads) {
+  if (threads < 0 || threads > kMaxThreads)
+    throw std::invalid_argument("thread count " + std::to_string(threads) + " is outside 0 .. " +
+                                std::to_string(kMaxThreads));
+}
+
 CellVisibility visibility_from_source(const Scene& scene, const TriangleIndex& index, const VisibilitySource& source,
                                       const std::vector<std::int64_t>& targets, const CellVisibilityOptions& options) {
-  if (options.threads < 0 || options.threads > kMaxThreads)
-    throw std::invalid_argument("thread count " + std::to_string(options.threads) + " is outside 0 .. " +
-                                std::to_string(kMaxThreads));
+  check_thread_count(options.threads);
   for (const std::int64_t t : targets)
     if (t < 0 || t >= static_cast<std::int64_t>(scene.triangles.size()))
       throw std::invalid_argument("target triangle index " + std::to_string(t) + " is out of range");

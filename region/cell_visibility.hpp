@@ -31,6 +31,10 @@ struct CellVisibilityOptions {
 // The largest thread count CellVisibilityOptions::threads accepts.
 inline constexpr int kMaxThreads = 1024;
 
+// Throws std::invalid_argument("thread count N is outside 0 .. kMaxThreads") unless 0 <= threads <= kMaxThreads
+// (0 = all cores): the one check of every region entry point that takes a thread count.
+void check_thread_count(int threads);
+
 struct CellVisibility {
   std::vector<VisibilityResult> results;  // one per target, in the order given
   VisibilityStats stats;                  // accumulated over all results (accumulate())

@@ -20,11 +20,6 @@
 namespace exactvis::region {
 namespace {
 
-Box3 approximate(const RationalBox3& b) {
-  return {{CGAL::to_double(b.lo.x), CGAL::to_double(b.lo.y), CGAL::to_double(b.lo.z)},
-          {CGAL::to_double(b.hi.x), CGAL::to_double(b.hi.y), CGAL::to_double(b.hi.z)}};
-}
-
 UmbraTarget box_target(const Box3& b) {
   return {{Point3{b.lo.x, b.lo.y, 0}, Point3{b.hi.x, b.lo.y, 0}, Point3{b.lo.x, b.hi.y, 0}, Point3{b.hi.x, b.hi.y, 0}},
           b.lo.z, b.hi.z};
@@ -69,28 +64,16 @@ bool segment_near_box(const Point3& p, const Point3& q, const Box3& box) {
 
 Point3 centre(const Box3& b) { return {0.5 * (b.lo.x + b.hi.x), 0.5 * (b.lo.y + b.hi.y), 0.5 * (b.lo.z + b.hi.z)}; }
 
-Box3 triangle_box(const Scene& scene, const SceneTriangle& t) {
-  Box3 b{scene.corner(t, 0), scene.corner(t, 0)};
-  for (int k = 1; k < 3; ++k)
-    for (int a = 0; a < 3; ++a) {
-      b.lo[a] = std::min(b.lo[a], scene.corner(t, k)[a]);
-      b.hi[a] = std::max(b.hi[a], scene.corner(t, k)[a]);
-    }
-  return b;
-}
-
 }  // namespace
 
 CellPvs conservative_cell_pvs(const PvsContext& context, const RationalBox3& cell, const PvsOptions& options) {
   check_view_cell(cell);
-  if (options.threads < 0 || options.threads > kMaxThreads)
-    throw std::invalid_argument("thread count " + std::to_string(options.threads) + " is outside 0 .. " +
-                                std::to_string(kMaxThreads));
+  check_thread_count(options.threads);
   const auto start = std::chrono::steady_clock::now();
   const Scene& scene = context.scene();
   const std::size_t n = scene.triangles.size();
   const std::vector<WallRectangle>& walls = context.extruded().walls;
-  const Box3 approx = approximate(cell);
+  const Box3 approx = approximate_box(cell);
 
   // The walls that can hide anything from this cell (cell strictly on one side, spanning its heights),
   // nearest first: a near wall has the widest umbra.

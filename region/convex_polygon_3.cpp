@@ -193,6 +193,11 @@ bool in_closed_box(const RationalPoint3& p, const RationalBox3& b) {
   return true;
 }
 
+Box3 approximate_box(const RationalBox3& b) {
+  return {{CGAL::to_double(b.lo.x), CGAL::to_double(b.lo.y), CGAL::to_double(b.lo.z)},
+          {CGAL::to_double(b.hi.x), CGAL::to_double(b.hi.y), CGAL::to_double(b.hi.z)}};
+}
+
 Box3 enclosing_box(const std::vector<RationalPoint3>& pts) {
   const double inf = std::numeric_limits<double>::infinity();
   Box3 b{{inf, inf, inf}, {-inf, -inf, -inf}};

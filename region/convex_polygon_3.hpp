@@ -80,6 +80,8 @@ RationalBox3 exact_box(const Box3& b);
 Polygon3 box_face(const RationalBox3& b, int axis, bool high);
 // Closed box membership. Exact.
 bool in_closed_box(const RationalPoint3& p, const RationalBox3& b);
+// The box rounded to doubles (nearest, CGAL::to_double): for choosing and ordering only, never for a decision.
+Box3 approximate_box(const RationalBox3& b);
 // A double box containing all the points (interval bounds of their exact coordinates).
 Box3 enclosing_box(const std::vector<RationalPoint3>& pts);
 

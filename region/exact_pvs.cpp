@@ -21,11 +21,6 @@
 namespace exactvis::region {
 namespace {
 
-Box3 approximate_box(const RationalBox3& b) {
-  return {{CGAL::to_double(b.lo.x), CGAL::to_double(b.lo.y), CGAL::to_double(b.lo.z)},
-          {CGAL::to_double(b.hi.x), CGAL::to_double(b.hi.y), CGAL::to_double(b.hi.z)}};
-}
-
 struct TriangleAnswer {
   bool visible = false;
   bool by_rays = false;
@@ -37,9 +32,7 @@ struct TriangleAnswer {
 
 CellPvs exact_cell_pvs(const PvsContext& context, const RationalBox3& cell, const PvsOptions& options) {
   check_view_cell(cell);
-  if (options.threads < 0 || options.threads > kMaxThreads)
-    throw std::invalid_argument("thread count " + std::to_string(options.threads) + " is outside 0 .. " +
-                                std::to_string(kMaxThreads));
+  check_thread_count(options.threads);
   const auto start = std::chrono::steady_clock::now();
   const Scene& scene = context.scene();
   const std::size_t n = scene.triangles.size();

@@ -36,16 +36,6 @@ bool contains(const Box3& outer, const Box3& inner) {
   return true;
 }
 
-Box3 triangle_box(const Scene& scene, const SceneTriangle& t) {
-  Box3 b{scene.corner(t, 0), scene.corner(t, 0)};
-  for (int c = 1; c < 3; ++c)
-    for (int k = 0; k < 3; ++k) {
-      b.lo[k] = std::min(b.lo[k], scene.corner(t, c)[k]);
-      b.hi[k] = std::max(b.hi[k], scene.corner(t, c)[k]);
-    }
-  return b;
-}
-
 // Crossing parity of the ray from q along d with the shell's triangles: the number of crossings, or -1 when
 // the ray meets the shell anywhere but in a transversal crossing of a relative interior (not generic).
 // Triangles for which skip(c) is true are left out (the caller knows the ray cannot meet them).

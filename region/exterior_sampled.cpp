@@ -54,9 +54,7 @@ SampledExterior sampled_exterior_visibility(const Scene& scene, const FloatRayCa
   if (options.views < 1) throw std::invalid_argument("sampled exterior visibility: views must be >= 1");
   if (options.resolution < 1) throw std::invalid_argument("sampled exterior visibility: resolution must be >= 1");
   if (options.mc_rays < 0) throw std::invalid_argument("sampled exterior visibility: mc_rays must be >= 0");
-  if (options.threads < 0 || options.threads > kMaxThreads)
-    throw std::invalid_argument("thread count " + std::to_string(options.threads) + " is outside 0 .. " +
-                                std::to_string(kMaxThreads));
+  check_thread_count(options.threads);
   const auto t0 = std::chrono::steady_clock::now();
   const std::size_t n = scene.triangles.size();
   auto flags = std::make_unique<std::atomic<unsigned char>[]>(n);  // 0 removed, 1 by views, 2 by rays

@@ -188,9 +188,7 @@ ExteriorTriangle ExteriorClassifier::classify(std::int64_t t, VisibilityStats* s
 
 ExteriorVisibility exterior_visibility(const Scene& scene, const TriangleIndex& index, const FloatRayCaster* caster,
                                        const ExteriorOptions& options) {
-  if (options.threads < 0 || options.threads > kMaxThreads)
-    throw std::invalid_argument("thread count " + std::to_string(options.threads) + " is outside 0 .. " +
-                                std::to_string(kMaxThreads));
+  check_thread_count(options.threads);
   const ExteriorClassifier classifier(scene, index, caster, options);
   ExteriorVisibility out;
   out.enclosing_box = classifier.enclosing_box();

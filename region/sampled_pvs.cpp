@@ -37,9 +37,7 @@ std::optional<RationalPoint3> barycentric_point(const std::array<RationalPoint3,
 
 CellPvs sampled_cell_pvs(const PvsContext& context, const RationalBox3& cell, const PvsOptions& options) {
   check_view_cell(cell);
-  if (options.threads < 0 || options.threads > kMaxThreads)
-    throw std::invalid_argument("thread count " + std::to_string(options.threads) + " is outside 0 .. " +
-                                std::to_string(kMaxThreads));
+  check_thread_count(options.threads);
   if (options.cell_rays < 0) throw std::invalid_argument("rays per cell must be >= 0");
   const auto start = std::chrono::steady_clock::now();
   const Scene& scene = context.scene();

@@ -18,7 +18,7 @@ using namespace exactvis;
 
 namespace {
 
-Box3 triangle_box(const Scene& s, const SceneTriangle& t) {
+Box3 corner_box(const Scene& s, const SceneTriangle& t) {
   Box3 b{s.corner(t, 0), s.corner(t, 0)};
   for (int k = 1; k < 3; ++k) {
     const Point3& p = s.corner(t, k);
@@ -37,7 +37,7 @@ std::vector<std::int64_t> naive_in_box(const Scene& s, const Box3& q) {
   std::vector<std::int64_t> out;
   if (q.empty()) return out;
   for (size_t i = 0; i < s.triangles.size(); ++i)
-    if (boxes_meet(triangle_box(s, s.triangles[i]), q)) out.push_back(static_cast<std::int64_t>(i));
+    if (boxes_meet(corner_box(s, s.triangles[i]), q)) out.push_back(static_cast<std::int64_t>(i));
   return out;
 }
 
@@ -70,7 +70,7 @@ TEST(TriangleIndex, BoxQueriesMatchBruteForce) {
     }
     // Boxes exactly touching a triangle's bounding box at a corner are closed: must be reported.
     for (size_t i = 0; i < s.triangles.size(); i += 97) {
-      const Box3 tb = triangle_box(s, s.triangles[i]);
+      const Box3 tb = corner_box(s, s.triangles[i]);
       const Box3 corner{tb.hi, {tb.hi.x + 1, tb.hi.y + 1, tb.hi.z + 1}};
       const auto r = index.candidates_in_box(corner);
       EXPECT_TRUE(std::binary_search(r.begin(), r.end(), static_cast<std::int64_t>(i)));
