@@ -4,7 +4,7 @@
 #include "aspect/random_convex_polytope.hpp"
 #include "kernel/scene.hpp"
 #include "oracles/aspect_oracle.hpp"
-
+#include "tests/scene_test_util.hpp"
 
 #include <array>
 #include <random>
@@ -12,14 +12,7 @@
 
 namespace exactvis::aspect_test {
 
-inline Scene make_scene(const std::vector<Point3>& v, const std::vector<std::array<int, 3>>& t) {
-  Scene s;
-  s.vertices = v;
-  for (std::size_t i = 0; i < t.size(); ++i) s.triangles.push_back({static_cast<std::int64_t>(i), t[i], 0});
-  s.objects.push_back({"test"});
-  s.faces_read = static_cast<std::int64_t>(t.size());
-  return s;
-}
+using scene_test::make_scene;  // tests/scene_test_util.hpp
 
 // The box [x0,x1] x [y0,y1] x [z0,z1] as 12 outward triangles, appended (vertex ids continue).
 inline void add_box(std::vector<Point3>& v, std::vector<std::array<int, 3>>& t, double x0, double y0, double z0,

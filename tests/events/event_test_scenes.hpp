@@ -4,6 +4,7 @@
 #include "kernel/predicates.hpp"
 #include "kernel/scene.hpp"
 #include "tests/events/ev_oracle.hpp"
+#include "tests/scene_test_util.hpp"
 
 #include <array>
 #include <cstdint>
@@ -14,15 +15,7 @@
 
 namespace exactvis::event_test {
 
-// One object "test"; triangle ids = list order.
-inline Scene make_scene(const std::vector<Point3>& v, const std::vector<std::array<int, 3>>& t) {
-  Scene s;
-  s.vertices = v;
-  for (std::size_t i = 0; i < t.size(); ++i) s.triangles.push_back({static_cast<std::int64_t>(i), t[i], 0});
-  s.objects.push_back({"test"});
-  s.faces_read = static_cast<std::int64_t>(t.size());
-  return s;
-}
+using scene_test::make_scene;  // one object "test"; triangle ids = list order (tests/scene_test_util.hpp)
 
 // `triangles` non-degenerate triangles with integer corners in [0, range]^3 (no shared vertex ids).
 inline Scene random_soup(unsigned seed, int triangles, int range) {

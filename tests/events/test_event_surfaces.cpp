@@ -4,6 +4,7 @@
 #include "events/ev_events.hpp"
 #include "events/event_surfaces.hpp"
 #include "io/write_event_surfaces.hpp"
+#include "tests/scene_test_util.hpp"
 
 #include <gtest/gtest.h>
 #include <vtkCellData.h>
@@ -21,24 +22,21 @@ namespace exactvis {
 namespace {
 
 Scene cube_floor_light() {
-  Scene s;
-  for (int i = 0; i < 8; ++i) s.vertices.push_back({2.0 * (i & 1), 2.0 * ((i >> 1) & 1), 2.0 * ((i >> 2) & 1)});
+  std::vector<Point3> v;
+  for (int i = 0; i < 8; ++i) v.push_back({2.0 * (i & 1), 2.0 * ((i >> 1) & 1), 2.0 * ((i >> 2) & 1)});
   const int faces[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
   std::vector<std::array<int, 3>> t;
   for (const auto& f : faces) {
     t.push_back({f[0], f[1], f[2]});
     t.push_back({f[0], f[2], f[3]});
   }
-  s.vertices.insert(s.vertices.end(), {{-10, -10, -1}, {10, -10, -1}, {10, 10, -1}, {-10, 10, -1}});
+  v.insert(v.end(), {{-10, -10, -1}, {10, -10, -1}, {10, 10, -1}, {-10, 10, -1}});
   t.push_back({8, 9, 10});
   t.push_back({8, 10, 11});
-  s.vertices.insert(s.vertices.end(), {{0.5, 0.5, 6}, {1.5, 0.5, 6}, {1.5, 1.5, 6}, {0.5, 1.5, 6}});
+  v.insert(v.end(), {{0.5, 0.5, 6}, {1.5, 0.5, 6}, {1.5, 1.5, 6}, {0.5, 1.5, 6}});
   t.push_back({12, 13, 14});
   t.push_back({12, 14, 15});
-  for (std::size_t i = 0; i < t.size(); ++i) s.triangles.push_back({static_cast<std::int64_t>(i), t[i], 0});
-  s.objects.push_back({"test"});
-  s.faces_read = static_cast<std::int64_t>(t.size());
-  return s;
+  return scene_test::make_scene(v, t);
 }
 
 TEST(EventSurfaces, WrittenAndReadBackWithArrays) {
