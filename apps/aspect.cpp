@@ -2,6 +2,7 @@
 // the aspect graph of a 3D model (docs/cli.md, docs/theory.md "Aspect graphs of polyhedra").
 #include "apps/cli_util.hpp"
 #include "apps/command_registry.hpp"
+#include "apps/common_options.hpp"
 #include "aspect/convex_aspect_graph.hpp"
 #include "aspect/closed_solid_fronts.hpp"
 #include "aspect/convex_model.hpp"
@@ -169,11 +170,7 @@ int run_general_orthographic(const AspectOptions& o, const Scene& scene, const s
   }();
   const ojson j = graph_json(g);
   if (!o.output.empty())
-    outputs.write(o.output, [&](const std::string& temp) {
-      std::ofstream out(temp);
-      out << app::json_text(j);
-      return static_cast<bool>(out);
-    });
+    exactvis::app::write_json_output(outputs, o.output, j);
   if (!o.vtp.empty() || !o.png.empty()) {
     const PartitionPicture pic = sphere_picture_of_cells(g, o.vtp.empty() ? 5 : 6);
     if (!o.vtp.empty())
@@ -237,11 +234,7 @@ int run(const AspectOptions& o) {
   }();
   const ojson j = graph_json(g);
   if (!o.output.empty())
-    outputs.write(o.output, [&](const std::string& temp) {
-      std::ofstream out(temp);
-      out << app::json_text(j);
-      return static_cast<bool>(out);
-    });
+    exactvis::app::write_json_output(outputs, o.output, j);
   if (!o.vtp.empty()) {
     PartitionPicture pic;
     if (o.orthographic) {
@@ -289,13 +282,13 @@ const exactvis::app::CommandRegistration registration(
       auto* pla = sub->add_option("--plane", opts->plane, "viewpoints on the plane z=H (H a number or num/den; convex models)");
       ort->excludes(per)->excludes(pla);
       per->excludes(pla);
-      sub->add_flag("--json", opts->json, "print regions, aspects, adjacency and counts as JSON on stdout");
-      sub->add_option("-o,--output", opts->output, "write the JSON to this file");
+      exactvis::app::add_json_flag(*sub, opts->json, "print regions, aspects, adjacency and counts as JSON on stdout");
+      exactvis::app::add_output_option(*sub, opts->output, "write the JSON to this file");
       sub->add_option("--vtp", opts->vtp, "write the partition as VTK PolyData: the viewing sphere (or the plane) coloured by region (cell array "
                     "\"region\"), with the boundary curves (region -1)");
       sub->add_option("--png", opts->png, "render a PNG: the partition (sphere or plane) and the model seen from a few regions "
                     "(VTK offscreen; starts a private Xvfb when DISPLAY is unset)");
-      sub->add_flag("-q,--quiet", opts->quiet, "no progress bar on stderr");
+      exactvis::app::add_quiet_flag(*sub, opts->quiet, "no progress bar on stderr");
       return [opts] { return run(*opts); };
     });
 

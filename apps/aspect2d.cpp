@@ -2,6 +2,7 @@
 // aspect graph of a planar scene: viewpoint regions of equal visible-edge sets (docs/cli.md).
 #include "apps/cli_util.hpp"
 #include "apps/command_registry.hpp"
+#include "apps/common_options.hpp"
 #include "aspect/aspect_graph_2d.hpp"
 #include "io/atomic_file.hpp"
 #include "io/load_scene.hpp"
@@ -159,11 +160,11 @@ const exactvis::app::CommandRegistration registration(
       CLI::App* sub = parent.add_subcommand("aspect2d", "aspect graph of a 2D scene (viewpoint regions by visible edges)");
       sub->add_option("scene", opts->scene, "2D scene JSON, or a 3D mesh with --slice")->required();
       sub->add_option("--slice", opts->slice, "section of a 3D scene by a plane: x=V, y=V or z=V");
-      sub->add_flag("--json", opts->json, "print regions, aspects and adjacency as JSON on stdout");
+      exactvis::app::add_json_flag(*sub, opts->json, "print regions, aspects and adjacency as JSON on stdout");
       sub->add_option("--svg", opts->svg, "write a picture: regions coloured by aspect");
       sub->add_option("--vtp", opts->vtp, "write regions (cell value = region) as VTK PolyData");
       sub->add_option("--margin", opts->margin, "viewpoint frame margin, relative to the scene size (default 0.25)");
-      sub->add_flag("-q,--quiet", opts->quiet, "no progress bars and no cost warning on stderr");
+      exactvis::app::add_quiet_flag(*sub, opts->quiet, "no progress bars and no cost warning on stderr");
       return [opts] { return run(*opts); };
     });
 

@@ -2,6 +2,7 @@
 // complex (free bitangents, edges, faces) of a planar scene (docs/cli.md).
 #include "apps/cli_util.hpp"
 #include "apps/command_registry.hpp"
+#include "apps/common_options.hpp"
 #include "api/complex2d.hpp"
 #include "io/atomic_file.hpp"
 #include "io/scene2d_json.hpp"
@@ -96,10 +97,10 @@ const exactvis::app::CommandRegistration registration(
       sub->add_option("scene", opts->scene, "2D scene JSON ({\"polygons\": ...}), or a 3D mesh with --slice")
           ->required();
       sub->add_option("--slice", opts->slice, "section of a 3D scene by a plane: x=V, y=V or z=V");
-      sub->add_flag("--json", opts->json, "print the complex as JSON on stdout");
+      exactvis::app::add_json_flag(*sub, opts->json, "print the complex as JSON on stdout");
       sub->add_option("--svg", opts->svg, "write a picture (objects, bitangents, maximal free segments)");
       sub->add_option("--vtp", opts->vtp, "write objects and bitangents as VTK PolyData");
-      sub->add_flag("-q,--quiet", opts->quiet, "No progress bar on stderr");
+      exactvis::app::add_quiet_flag(*sub, opts->quiet);
       return [opts] { return run(*opts); };
     });
 

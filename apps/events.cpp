@@ -3,6 +3,7 @@
 // with occlusion (docs/cli.md "events", definitions in docs/theory.md section 6).
 #include "apps/cli_util.hpp"
 #include "apps/command_registry.hpp"
+#include "apps/common_options.hpp"
 #include "api/events.hpp"
 #include "events/eee_enumeration.hpp"
 #include "events/ev_events.hpp"
@@ -63,7 +64,7 @@ int run_events(const EventsOptions& o) {
   }
   outputs.commit();
   if (o.json) {
-    std::cout << exactvis::api::events_json(scene, answer).dump(2) << "\n";
+    std::cout << exactvis::app::json_text(exactvis::api::events_json(scene, answer));
     return 0;
   }
   using exactvis::format_count;
@@ -133,7 +134,7 @@ const exactvis::app::CommandRegistration registration("events", 110, [](CLI::App
                   "Event kinds to compute: EV, EEE or EV,EEE (default). Full EEE enumeration is quadratic in the "
                   "number of edges (docs/performance.md): use --kinds EV or --light on large scenes")
       ->capture_default_str();
-  sub->add_flag("--json", opts->json, "Machine-readable JSON on stdout");
+  exactvis::app::add_json_flag(*sub, opts->json);
   sub->add_option("--vtp", opts->vtp, "Write the event surfaces (EV wedges, EEE ruled strips) to this .vtp file");
   sub->add_option("--png", opts->png,
                   "Render a picture (VTK offscreen; starts Xvfb when DISPLAY is unset): the event surfaces (EV "
@@ -142,7 +143,7 @@ const exactvis::app::CommandRegistration registration("events", 110, [](CLI::App
   sub->add_flag("--no-split", opts->no_split,
                 "Do not split EV free intervals where the end objects change (faster on large scenes; segment_ends "
                 "are then those of each interval's midpoint line only)");
-  sub->add_flag("-q,--quiet,--no-progress", opts->no_progress, "No progress bar on stderr");
+  exactvis::app::add_quiet_or_no_progress_flag(*sub, opts->no_progress);
   return [opts]() { return run_events(*opts); };
 });
 

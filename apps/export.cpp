@@ -2,6 +2,7 @@
 // as VTK PolyData with "id" and "object" cell arrays, and/or a picture of it coloured by object.
 #include "apps/cli_util.hpp"
 #include "apps/command_registry.hpp"
+#include "apps/common_options.hpp"
 #include "io/atomic_file.hpp"
 #include "io/load_scene.hpp"
 #include "io/result_pictures.hpp"
@@ -49,7 +50,7 @@ int run_export(const ExportOptions& o) {
     j["files"] = nlohmann::ordered_json::object();
     if (!o.output.empty()) j["files"]["vtp"] = o.output;
     if (!o.png.empty()) j["files"]["png"] = o.png;
-    std::cout << j.dump(2) << "\n";
+    std::cout << exactvis::app::json_text(j);
   } else {
     // The summary went to stderr before pictures existed; it stays there (scripts read stdout as empty).
     for (const std::string& f : {o.output, o.png})
@@ -64,13 +65,13 @@ const exactvis::app::CommandRegistration registration("export", 30, [](CLI::App&
   auto opts = std::make_shared<ExportOptions>();
   CLI::App* sub = parent.add_subcommand("export", "Write a scene as VTK PolyData (.vtp) for ParaView, or as a picture");
   sub->add_option("scene", opts->scenes, "Scene files (.obj .ply .off .stl), loaded as one scene")->required();
-  sub->add_option("-o,--output", opts->output, "Output .vtp file");
+  exactvis::app::add_output_option(*sub, opts->output, "Output .vtp file");
   sub->add_option("--png", opts->png,
                   "Render a picture of the scene, coloured by object (VTK offscreen; starts Xvfb when DISPLAY is "
                   "unset)");
   sub->add_option("--png-size", opts->png_size, "Size of the --png picture in pixels, WxH")->capture_default_str();
-  sub->add_flag("--json", opts->json, "Print {\"triangles\", \"objects\", \"files\"} as JSON on stdout");
-  sub->add_flag("-q,--quiet", opts->quiet, "Nothing on stderr but errors");
+  exactvis::app::add_json_flag(*sub, opts->json, "Print {\"triangles\", \"objects\", \"files\"} as JSON on stdout");
+  exactvis::app::add_quiet_flag(*sub, opts->quiet, "Nothing on stderr but errors");
   return [opts]() { return run_export(*opts); };
 });
 

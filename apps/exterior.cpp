@@ -4,6 +4,7 @@
 // instead; `--compare sampled` runs both and reports where the sampler is wrong.
 #include "apps/cli_util.hpp"
 #include "apps/command_registry.hpp"
+#include "apps/common_options.hpp"
 #include "io/atomic_file.hpp"
 #include "io/json_number.hpp"
 #include "io/load_scene.hpp"
@@ -199,7 +200,7 @@ int run_exterior(const ExteriorCliOptions& o) {
 
   const std::size_t kept = static_cast<std::size_t>(std::count(keep.begin(), keep.end(), true));
   if (o.json) {
-    std::cout << j.dump(2) << "\n";
+    std::cout << exactvis::app::json_text(j);
   } else {
     std::cout << "kept " << kept << "\n" << "removed " << (n - kept) << "\n";
     if (exact && sampled) {
@@ -225,9 +226,9 @@ const exactvis::app::CommandRegistration registration("exterior", 110, [](CLI::A
       "Exact exterior visibility of a model: keep the triangles some ray of positive measure leaves towards "
       "infinity (with a witness ray each), remove the others (proved hidden; docs/theory.md section 5.6)");
   sub->add_option("model", o->models, "Model files (.obj .ply .off .stl), loaded as one model")->required();
-  sub->add_option("-o,--output", o->output,
-                  "Write the reduced mesh (the kept triangles, same vertex coordinates; .ply .obj .off .stl)");
-  sub->add_flag("--json", o->json, "Print {\"kept\", \"removed\", \"witnesses\"} as JSON on stdout");
+  exactvis::app::add_output_option(
+      *sub, o->output, "Write the reduced mesh (the kept triangles, same vertex coordinates; .ply .obj .off .stl)");
+  exactvis::app::add_json_flag(*sub, o->json, "Print {\"kept\", \"removed\", \"witnesses\"} as JSON on stdout");
   sub->add_option("--vtp", o->vtp, "Write the model coloured kept (visible=1) / removed (0) with the witness rays");
   sub->add_option("--method", o->method, "exact (default) or sampled (the sampling pipeline of seed 003)")
       ->capture_default_str();
@@ -235,17 +236,15 @@ const exactvis::app::CommandRegistration registration("exterior", 110, [](CLI::A
                   "sampled: also run the sampler and report the triangles it gets wrong against the exact answer");
   sub->add_option("--rays", o->rays, "Exact method: Embree rays per triangle at most that propose witnesses (each re-checked exactly)")
       ->capture_default_str();
-  sub->add_option("--samples", o->samples, "Random segments per pair before each exact from-region query")
-      ->capture_default_str();
+  exactvis::app::add_samples_option(*sub, o->samples, "Random segments per pair before each exact from-region query");
   sub->add_option("--views", o->views, "Sampled: view directions on the sphere")->capture_default_str();
   sub->add_option("--resolution", o->resolution, "Sampled: rays per side of each view's image")
       ->capture_default_str();
   sub->add_option("--mc-rays", o->mc_rays, "Sampled: rays from points of each triangle the views missed, over the whole sphere (0: none)")
       ->capture_default_str();
-  sub->add_option("--seed", o->seed, "Seed of the proposals and samplers (exact answers do not depend on it)")
-      ->capture_default_str();
-  sub->add_option("--threads", o->threads, "Worker threads: 0 = all cores (default), else 1 .. 1024");
-  sub->add_flag("-q,--quiet", o->quiet, "No progress bar on stderr");
+  exactvis::app::add_seed_option(*sub, o->seed, "Seed of the proposals and samplers (exact answers do not depend on it)");
+  exactvis::app::add_threads_option(*sub, o->threads);
+  exactvis::app::add_quiet_flag(*sub, o->quiet);
   return [o]() { return run_exterior(*o); };
 });
 

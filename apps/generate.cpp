@@ -1,6 +1,7 @@
 // `exactvis generate KIND --triangles N --seed S -o FILE [--json] [-q]`: a deterministic test scene.
 #include "apps/cli_util.hpp"
 #include "apps/command_registry.hpp"
+#include "apps/common_options.hpp"
 #include "io/write_mesh.hpp"
 #include "kernel/scene_generators.hpp"
 
@@ -46,10 +47,10 @@ const exactvis::app::CommandRegistration registration("generate", 20, [](CLI::Ap
   sub->add_option("--seed,-s", opts->seed, "Random seed (0 .. 2^64-1)")
       ->capture_default_str()
       ->check(CLI::NonNegativeNumber);
-  sub->add_option("-o,--output", opts->output, "Output file (.obj with a group per object, .off, .ply, .stl)")
+  exactvis::app::add_output_option(*sub, opts->output, "Output file (.obj with a group per object, .off, .ply, .stl)")
       ->required();
-  sub->add_flag("--json", opts->json, "Print {\"file\", \"kind\", \"triangles\", \"objects\"} as JSON on stdout");
-  sub->add_flag("-q,--quiet", opts->quiet, "Nothing on stderr but errors");
+  exactvis::app::add_json_flag(*sub, opts->json, "Print {\"file\", \"kind\", \"triangles\", \"objects\"} as JSON on stdout");
+  exactvis::app::add_quiet_flag(*sub, opts->quiet, "Nothing on stderr but errors");
   return [opts]() { return run_generate(*opts); };
 });
 

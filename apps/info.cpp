@@ -1,5 +1,7 @@
 // `exactvis info SCENE... [--json]`: statistics of a scene (after loading, as every other subcommand sees it).
+#include "apps/cli_util.hpp"
 #include "apps/command_registry.hpp"
+#include "apps/common_options.hpp"
 #include "io/load_scene.hpp"
 
 #include <nlohmann/json.hpp>
@@ -28,7 +30,7 @@ int run_info(const InfoOptions& o) {
       j["bounding_box"] = {{"min", {box.lo.x, box.lo.y, box.lo.z}}, {"max", {box.hi.x, box.hi.y, box.hi.z}}};
     else
       j["bounding_box"] = nullptr;
-    std::cout << j.dump(2) << "\n";
+    std::cout << exactvis::app::json_text(j);
   } else {
     std::cout << "triangles:          " << scene.triangles.size() << "\n"
               << "objects:            " << scene.objects.size() << "\n"
@@ -47,8 +49,8 @@ const exactvis::app::CommandRegistration registration("info", 10, [](CLI::App& p
   auto opts = std::make_shared<InfoOptions>();
   CLI::App* sub = parent.add_subcommand("info", "Print scene statistics (triangles, objects, bounding box, ...)");
   sub->add_option("scene", opts->scenes, "Scene files (.obj .ply .off .stl), loaded as one scene")->required();
-  sub->add_flag("--json", opts->json, "Machine-readable JSON on stdout");
-  sub->add_flag("-q,--quiet", opts->quiet, "No progress bar on stderr (accepted by every subcommand; this one draws none)");
+  exactvis::app::add_json_flag(*sub, opts->json);
+  exactvis::app::add_quiet_flag(*sub, opts->quiet, exactvis::app::kQuietNoBarHelp);
   return [opts]() { return run_info(*opts); };
 });
 

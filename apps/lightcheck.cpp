@@ -4,6 +4,7 @@
 // proof (the backprojection is empty: the blockers that cover the light). docs/cli.md "lightcheck".
 #include "apps/cli_util.hpp"
 #include "apps/command_registry.hpp"
+#include "apps/common_options.hpp"
 #include "io/load_scene.hpp"
 #include "kernel/segment_triangle_intersection.hpp"
 #include "kernel/triangle_index.hpp"
@@ -115,7 +116,7 @@ int run_lightcheck(const LightcheckOptions& o) {
     ordered_json out;
     out["points"] = all;
     out["counts"] = {{"points", points.size()}, {"fully_lit", n_lit}, {"partly_lit", n_part}, {"umbra", n_umbra}};
-    std::cout << out.dump(2) << "\n";
+    std::cout << exactvis::app::json_text(out);
   } else {
     std::cout << "points: " << points.size() << " (fully lit " << n_lit << ", partly lit " << n_part << ", umbra "
               << n_umbra << ")\n";
@@ -133,8 +134,8 @@ const exactvis::app::CommandRegistration registration("lightcheck", 121, [](CLI:
       ->required();
   sub->add_option("--points", opts->points, "Text file: one point 'x y z' per line (decimals or num/den)")
       ->required();
-  sub->add_flag("--json", opts->json, "Machine-readable JSON on stdout");
-  sub->add_flag("-q,--quiet", opts->quiet, "No progress bar on stderr (accepted by every subcommand; this one draws none)");
+  exactvis::app::add_json_flag(*sub, opts->json);
+  exactvis::app::add_quiet_flag(*sub, opts->quiet, exactvis::app::kQuietNoBarHelp);
   return [opts]() { return run_lightcheck(*opts); };
 });
 

@@ -5,6 +5,7 @@
 #include "api/pvs.hpp"
 #include "apps/cli_util.hpp"
 #include "apps/command_registry.hpp"
+#include "apps/common_options.hpp"
 #include "apps/pvs_run.hpp"
 #include "io/atomic_file.hpp"
 #include "io/load_scene.hpp"
@@ -285,11 +286,7 @@ int run_pvs(const PvsCliOptions& o) {
     const OrderedJson doc = pvs_document(scene_label, static_cast<std::int64_t>(scene.triangles.size()),
                                          std::move(done_cells), shard_json);
     if (!o.output.empty()) {
-      doc_output->write(o.output, [&](const std::string& temp) {
-        std::ofstream out(temp);
-        out << app::json_text(doc);
-        return static_cast<bool>(out);
-      });
+      exactvis::app::write_json_output(*doc_output, o.output, doc);
     } else if (o.json) {
       std::cout << app::json_text(doc);
     }
@@ -309,7 +306,7 @@ const exactvis::app::CommandRegistration registration("pvs", 110, [](CLI::App& p
   sub->add_option("--grid", o->grid, "View cells: an NX,NY,NZ grid over the scene's bounding box (or --box)");
   sub->add_option("--box", o->box, "The box the --grid divides: X0,Y0,Z0,X1,Y1,Z1 (numbers or num/den)");
   sub->add_option("--cells", o->cells, "View cells file {\"cells\": [[x0,y0,z0,x1,y1,z1], ...]}");
-  sub->add_flag("--json", o->json, "The result as one JSON document (on stdout, or in the -o file)");
+  exactvis::app::add_json_flag(*sub, o->json, "The result as one JSON document (on stdout, or in the -o file)");
   sub->add_option("-o,--output", o->output,
                   "Write the result to this file: a JSON document, or JSON lines (one cell per line, written as "
                   "each cell finishes) when the name ends in .jsonl or --jsonl is given");
@@ -331,16 +328,15 @@ const exactvis::app::CommandRegistration registration("pvs", 110, [](CLI::App& p
                   "no witnesses)")
       ->capture_default_str();
   sub->add_option("--shard", o->shard, "Compute only cells K, K+N, K+2N, ... (job arrays; join with pvs-merge)");
-  sub->add_option("--threads", o->threads, "Worker threads: 0 = all cores (default), else 1 .. 1024");
-  sub->add_option("--samples", o->samples, "Random segments per source/target pair in the exact query")
-      ->capture_default_str();
+  exactvis::app::add_threads_option(*sub, o->threads);
+  exactvis::app::add_samples_option(*sub, o->samples, "Random segments per source/target pair in the exact query");
   sub->add_option("--rays", o->rays,
                   "exact: Embree rays per triangle proposing witnesses (default 8); sampled: random rays per cell "
                   "(default 100000); every hit re-checked exactly");
   sub->add_flag("--no-hierarchy", o->no_hierarchy,
                 "exact: decide every triangle on its own (no hidden-box culling; same answers, for comparison)");
-  sub->add_option("--seed", o->seed, "Seed of the sampling (answers do not depend on it)")->capture_default_str();
-  sub->add_flag("-q,--quiet", o->quiet, "No progress bar on stderr");
+  exactvis::app::add_seed_option(*sub, o->seed);
+  exactvis::app::add_quiet_flag(*sub, o->quiet);
   return [o]() { return run_pvs(*o); };
 });
 

@@ -2,6 +2,7 @@
 // documents or JSON lines, in any order) into the document a single unsharded run writes.
 #include "apps/cli_util.hpp"
 #include "apps/command_registry.hpp"
+#include "apps/common_options.hpp"
 #include "io/atomic_file.hpp"
 #include "io/load_scene.hpp"
 #include "io/pvs_json.hpp"
@@ -114,11 +115,7 @@ int run_merge(const MergeOptions& o) {
   std::vector<OrderedJson> all;
   for (auto& [i, c] : cells) all.push_back(std::move(c));
   const OrderedJson doc = pvs_document(first->scene, first->triangles, std::move(all));
-  outputs.write(o.output, [&](const std::string& temp) {
-    std::ofstream out(temp);
-    out << exactvis::app::json_text(doc);
-    return static_cast<bool>(out);
-  });
+  exactvis::app::write_json_output(outputs, o.output, doc);
   outputs.commit();
   if (o.json) std::cout << exactvis::app::json_text(doc);
   else if (!o.quiet)
@@ -131,9 +128,9 @@ const exactvis::app::CommandRegistration registration("pvs-merge", 111, [](CLI::
   CLI::App* sub = parent.add_subcommand(
       "pvs-merge", "Join the outputs of `exactvis pvs --shard K/N` runs into the file of one unsharded run");
   sub->add_option("shards", o->inputs, "Shard outputs (JSON documents or JSON lines)")->required();
-  sub->add_option("-o,--output", o->output, "The merged PVS document")->required();
-  sub->add_flag("--json", o->json, "Also print the merged document on stdout");
-  sub->add_flag("-q,--quiet", o->quiet, "No summary line on stdout");
+  exactvis::app::add_output_option(*sub, o->output, "The merged PVS document")->required();
+  exactvis::app::add_json_flag(*sub, o->json, "Also print the merged document on stdout");
+  exactvis::app::add_quiet_flag(*sub, o->quiet, "No summary line on stdout");
   return [o]() { return run_merge(*o); };
 });
 

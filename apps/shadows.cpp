@@ -4,6 +4,7 @@
 #include "api/shadows.hpp"
 #include "apps/cli_util.hpp"
 #include "apps/command_registry.hpp"
+#include "apps/common_options.hpp"
 #include "io/atomic_file.hpp"
 #include "io/load_scene.hpp"
 #include "io/render_png.hpp"
@@ -54,7 +55,7 @@ int run_shadows(const ShadowsCliOptions& o) {
   outputs.commit();
 
   if (o.json) {
-    std::cout << exactvis::api::shadows_json(scene, res, opt.light).dump(2) << "\n";
+    std::cout << exactvis::app::json_text(exactvis::api::shadows_json(scene, res, opt.light));
     return 0;
   }
   const exactvis::api::ShadowCounts n = exactvis::api::shadow_counts(res);
@@ -81,8 +82,8 @@ const exactvis::app::CommandRegistration registration("shadows", 120, [](CLI::Ap
   sub->add_option("-o,--vtp", opts->vtp, "Write the conforming mesh (.vtp: irradiance per vertex, class per cell)");
   sub->add_option("--ply", opts->ply, "Write the conforming mesh as ASCII .ply");
   sub->add_option("--png", opts->png, "Render the lit scene to a PNG (VTK offscreen; starts Xvfb when DISPLAY is unset)");
-  sub->add_flag("--json", opts->json, "Machine-readable JSON on stdout");
-  sub->add_flag("-q,--quiet,--no-progress", opts->no_progress, "No progress bar on stderr");
+  exactvis::app::add_json_flag(*sub, opts->json);
+  exactvis::app::add_quiet_or_no_progress_flag(*sub, opts->no_progress);
   return [opts]() { return run_shadows(*opts); };
 });
 

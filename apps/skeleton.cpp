@@ -3,6 +3,7 @@
 #include "api/skeleton.hpp"
 #include "apps/cli_util.hpp"
 #include "apps/command_registry.hpp"
+#include "apps/common_options.hpp"
 #include "io/atomic_file.hpp"
 #include "io/load_scene.hpp"
 #include "io/write_skeleton_json.hpp"
@@ -34,7 +35,8 @@ int run(const SkeletonCliOptions& o) {
   const Skeleton3D sk = api::skeleton(scene, request);
   const SkeletonSelection sel = full_selection(sk);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  const std::string text = o.json ? api::skeleton_json(scene, sk).dump(2) + "\n" : skeleton_to_text(sk, sel, seconds);
+  const std::string text =
+      o.json ? exactvis::app::json_text(api::skeleton_json(scene, sk)) : skeleton_to_text(sk, sel, seconds);
   if (!o.vtp.empty()) outputs.write(o.vtp, [&](const std::string& temp) {
     write_skeleton_vtp(temp, scene, sk, sel);
     return true;
@@ -61,10 +63,10 @@ const app::CommandRegistration registration("skeleton", 115, [](CLI::App& parent
   sub->add_option("--pair", opts->pair,
                   "Only the nodes and arcs whose maximal free segments end on A and B (object names, or "
                   "triangle ids), with the end nodes of those arcs");
-  sub->add_flag("--json", opts->json, "Machine-readable JSON (docs/cli.md) instead of the text summary");
-  sub->add_option("-o,--output", opts->output, "Write the text or JSON to this file instead of stdout");
+  exactvis::app::add_json_flag(*sub, opts->json, "Machine-readable JSON (docs/cli.md) instead of the text summary");
+  exactvis::app::add_output_option(*sub, opts->output, "Write the text or JSON to this file instead of stdout");
   sub->add_option("--vtp", opts->vtp, "Write nodes (segments) and arcs (ruled strips) to this .vtp file");
-  sub->add_flag("-q,--quiet", opts->quiet, "No progress bar on stderr");
+  exactvis::app::add_quiet_flag(*sub, opts->quiet);
   return [opts]() { return run(*opts); };
 });
 

@@ -3,6 +3,7 @@
 // hidden) and the false invisible ones (missing, visible, each with a witness), the exact and reported sizes.
 #include "apps/cli_util.hpp"
 #include "apps/command_registry.hpp"
+#include "apps/common_options.hpp"
 #include "io/atomic_file.hpp"
 #include "io/load_scene.hpp"
 #include "io/quake3_bsp.hpp"
@@ -155,15 +156,11 @@ int run_validate(const ValidateOptions& o) {
     });
   }
   if (!o.output.empty())
-    outputs.write(o.output, [&](const std::string& temp) {
-      std::ofstream out(temp);
-      out << j.dump(2) << "\n";
-      return static_cast<bool>(out);
-    });
+    exactvis::app::write_json_output(outputs, o.output, j);
   outputs.commit();
 
   if (o.json) {
-    std::cout << j.dump(2) << "\n";
+    std::cout << exactvis::app::json_text(j);
   } else {
     for (std::size_t k = 0; k < cells.size(); ++k) {
       const region::PvsCheck& c = checks[k];
@@ -282,11 +279,7 @@ int run_validate_bsp(const ValidateOptions& o) {
   j["totals"] = {{"pairs", pairs.size()}, {"false_invisible", false_invisible}, {"false_visible", false_visible}};
 
   if (!o.output.empty())
-    outputs.write(o.output, [&](const std::string& temp) {
-      std::ofstream out(temp);
-      out << j.dump(2) << "\n";
-      return static_cast<bool>(out);
-    });
+    exactvis::app::write_json_output(outputs, o.output, j);
   if (!o.obj.empty())
     outputs.write(o.obj, [&](const std::string& temp) {
       quake3::write_opaque_obj(temp, map, occluders);
@@ -295,7 +288,7 @@ int run_validate_bsp(const ValidateOptions& o) {
   outputs.commit();
 
   if (o.json) {
-    std::cout << j.dump(2) << "\n";
+    std::cout << exactvis::app::json_text(j);
   } else {
     for (std::size_t i = 0; i < pairs.size(); ++i) {
       const bool vis = map.cluster_visible(pairs[i].first, pairs[i].second);
@@ -332,8 +325,8 @@ const exactvis::app::CommandRegistration registration("validate", 110, [](CLI::A
   sub->add_option("--cells", o->cells, "View cells file {\"cells\": [[x0,y0,z0,x1,y1,z1], ...]}");
   sub->add_option("--pvs", o->pvs,
                   "The PVS to check: exactvis pvs JSON (or its JSON lines), or text lines 'cell_index: id id ...'");
-  sub->add_flag("--json", o->json, "Print the JSON report on stdout (instead of the summary)");
-  sub->add_option("-o,--output", o->output, "Write the JSON report to this file");
+  exactvis::app::add_json_flag(*sub, o->json, "Print the JSON report on stdout (instead of the summary)");
+  exactvis::app::add_output_option(*sub, o->output, "Write the JSON report to this file");
   sub->add_option("--vtp", o->vtp, "Write DIR/cell_K.vtp per cell: the scene coloured by status, with the cell box");
   sub->add_option("--bsp", o->bsp, "Quake 3 map (.bsp, ARCHIVE.pk3:MEMBER or a .pk3 with one map): check its visdata");
   sub->add_option("--pairs", o->pairs,
@@ -344,12 +337,10 @@ const exactvis::app::CommandRegistration registration("validate", 110, [](CLI::A
                   "With --bsp: leaves (the compiled solid space, default) or brushes (not implemented yet)")
       ->capture_default_str();
   sub->add_option("--obj", o->obj, "With --bsp: write the map's opaque geometry as OBJ");
-  sub->add_option("--samples", o->samples, "Random segments cast per source/target pair before the exact query")
-      ->capture_default_str();
-  sub->add_option("--seed", o->seed, "Seed of the sampling and of --pairs (answers do not depend on it)")
-      ->capture_default_str();
-  sub->add_option("--threads", o->threads, "Worker threads: 0 = all cores (default), else 1 .. 1024");
-  sub->add_flag("-q,--quiet", o->quiet, "No progress bar on stderr");
+  exactvis::app::add_samples_option(*sub, o->samples);
+  exactvis::app::add_seed_option(*sub, o->seed, "Seed of the sampling and of --pairs (answers do not depend on it)");
+  exactvis::app::add_threads_option(*sub, o->threads);
+  exactvis::app::add_quiet_flag(*sub, o->quiet);
   return [o]() { return run_validate_any(*o); };
 });
 

@@ -4,6 +4,7 @@
 // with an exact witness (docs/cli.md).
 #include "apps/cli_util.hpp"
 #include "apps/command_registry.hpp"
+#include "apps/common_options.hpp"
 #include "io/atomic_file.hpp"
 #include "io/load_scene.hpp"
 #include "io/scene2d_json.hpp"
@@ -173,8 +174,8 @@ const exactvis::app::CommandRegistration registration(
                       "around the point, or the O(n^4) cell sampling for segments (same answers)");
       sub->add_option("--margin", opts->margin, "frame margin around the scene, relative to its size (default 0.5)");
       sub->add_option("--svg", opts->svg, "write a picture of the visibility polygon");
-      sub->add_flag("-q,--quiet", opts->quiet, "No progress bar on stderr (accepted by every subcommand; this one draws none)");
-      sub->add_flag("--json", opts->json, "The answer as JSON on stdout (the only output form: accepted for uniformity)");
+      exactvis::app::add_quiet_flag(*sub, opts->quiet, exactvis::app::kQuietNoBarHelp);
+      exactvis::app::add_json_flag(*sub, opts->json, "The answer as JSON on stdout (the only output form: accepted for uniformity)");
       return [opts] { return run(*opts); };
     });
 

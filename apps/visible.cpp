@@ -3,6 +3,7 @@
 //  from-region visibility with witnesses.
 #include "apps/cli_util.hpp"
 #include "apps/command_registry.hpp"
+#include "apps/common_options.hpp"
 #include "io/atomic_file.hpp"
 #include "io/json_number.hpp"
 #include "io/load_scene.hpp"
@@ -166,15 +167,11 @@ int run_visible(const VisibleOptions& o) {
     outputs.write(o.png, [&](const std::string& temp) { return render_scene_png(temp, picture, png_size[0], png_size[1]); });
   }
   if (!o.output.empty()) {
-    outputs.write(o.output, [&](const std::string& temp) {
-      std::ofstream out(temp);
-      out << j.dump(2) << "\n";
-      return static_cast<bool>(out);
-    });
+    exactvis::app::write_json_output(outputs, o.output, j);
   }
   outputs.commit();
   if (o.json) {
-    std::cout << j.dump(2) << "\n";
+    std::cout << exactvis::app::json_text(j);
   } else {
     std::vector<std::vector<std::string>> rows;
     for (const auto& r : results) {
@@ -202,20 +199,18 @@ const exactvis::app::CommandRegistration registration("visible", 100, [](CLI::Ap
                             "Convex planar source polygon \"x,y,z;x,y,z;...\" (numbers or num/den)");
   c->excludes(p);
   sub->add_option("--triangles", o->triangles, "\"all\" or comma-separated scene triangle ids")->capture_default_str();
-  sub->add_flag("--json", o->json, "Print the JSON result on stdout");
-  sub->add_option("-o,--output", o->output, "Write the JSON result to this file");
+  exactvis::app::add_json_flag(*sub, o->json, "Print the JSON result on stdout");
+  exactvis::app::add_output_option(*sub, o->output, "Write the JSON result to this file");
   sub->add_option("--vtp", o->vtp, "Write the scene coloured visible/hidden with the witnesses as lines (.vtp)");
   sub->add_option("--png", o->png,
                   "Render a picture (VTK offscreen; starts Xvfb when DISPLAY is unset): the scene coloured "
                   "visible/hidden, the cell or polygon as a blue wire frame, a legend");
   sub->add_option("--png-size", o->png_size, "Size of the --png picture in pixels, WxH")->capture_default_str();
   sub->add_flag("--witnesses", o->witnesses, "Draw the witness segments in the --png picture as thin lines");
-  sub->add_option("--samples", o->samples, "Random segments cast per source/target pair before the exact query")
-      ->capture_default_str();
-  sub->add_option("--seed", o->seed, "Seed of the sampling (answers do not depend on it)")
-      ->capture_default_str();
-  sub->add_option("--threads", o->threads, "Worker threads: 0 = all cores (default), else 1 .. 1024");
-  sub->add_flag("-q,--quiet", o->quiet, "No progress bar on stderr");
+  exactvis::app::add_samples_option(*sub, o->samples);
+  exactvis::app::add_seed_option(*sub, o->seed);
+  exactvis::app::add_threads_option(*sub, o->threads);
+  exactvis::app::add_quiet_flag(*sub, o->quiet);
   return [o]() { return run_visible(*o); };
 });
 
