@@ -3,13 +3,30 @@
 #include "kernel/filtered_predicate.hpp"
 #include "kernel/predicates.hpp"
 
+#include <CGAL/Interval_nt.h>
+
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <optional>
 #include <type_traits>
 #include <utility>
 
 namespace exactvis {
 namespace {
+constexpr int kCoverPieces = 32;  // boxes covering a ray inside the scene box (candidate query)
+
+// The box's face coordinate on axis k (hi when `upper`).
+double box_face(const Box3& box, int k, bool upper) {
+  const Point3& p = upper ? box.hi : box.lo;
+  return k == 0 ? p.x : k == 1 ? p.y : p.z;
+}
+
+void set_box_axis(Box3& b, int k, double lo, double hi) {
+  (k == 0 ? b.lo.x : k == 1 ? b.lo.y : b.lo.z) = lo;
+  (k == 0 ? b.hi.x : k == 1 ? b.hi.y : b.hi.z) = hi;
+}
+
 
 // The ray's origin and direction (exact) with their enclosures, computed once per ray for layers 1 and 2.
 struct RayInput {
@@ -142,39 +159,100 @@ std::optional<Exact> coplanar_hit(const RayInput& r, const Scene& scene, const S
   return entry;
 }
 
+// Candidates of the exact path: triangles whose boxes meet one of 32 outward-rounded boxes covering the ray
+// inside the box, the exit parameter constructed exactly. Used when the interval path below cannot bound
+// the exit (direction components too small for their enclosures to exclude 0). nullopt: the ray leaves the
+// box at once (no hit).
+std::optional<std::vector<std::int64_t>> exact_cover_candidates(const TriangleIndex& index, const Box3& box,
+                                                                const Vec3<Exact>& origin, const Vec3<Exact>& dir) {
+  std::optional<Exact> exit;
+  for (int k = 0; k < 3; ++k) {
+    const Sign sd = exact_sign(dir[k]);
+    if (sd == Sign::Zero) continue;
+    const Exact s = (Exact(box_face(box, k, sd == Sign::Positive)) - origin[k]) / dir[k];
+    if (!exit || s < *exit) exit = s;
+  }
+  if (!exit || exact_sign(*exit) != Sign::Positive) return std::nullopt;
+  std::vector<std::int64_t> cand;
+  for (int i = 0; i < kCoverPieces; ++i) {
+    const Vec3<Exact> p = origin + (*exit * Exact(i, kCoverPieces)) * dir;
+    const Vec3<Exact> q = origin + (*exit * Exact(i + 1, kCoverPieces)) * dir;
+    Box3 b;
+    for (int k = 0; k < 3; ++k) {
+      const auto ip = CGAL::to_interval(p[k]), iq = CGAL::to_interval(q[k]);
+      set_box_axis(b, k, std::min(ip.first, iq.first), std::max(ip.second, iq.second));
+    }
+    const auto c = index.candidates_in_box(b);
+    cand.insert(cand.end(), c.begin(), c.end());
+  }
+  return cand;
+}
+
+// The same cover from interval enclosures only (no rational constructed): the exit parameter is bounded
+// above by the smallest sup of (face_k - o_k) / d_k over the axes whose direction enclosure excludes 0 (a
+// larger bound only adds candidates), and the piece ends o + s_i d are enclosed by interval arithmetic, so
+// each piece box contains the exact segment [o + s_i d, o + s_i+1 d]. Whether the ray leaves the box at once
+// (exit <= 0) is decided exactly by signs: exit > 0 iff sign(face_k - o_k) = sign(d_k) on every axis with
+// d_k != 0 (the interval decides, the rationals only when it cannot). nullopt: no interval bound (the caller
+// takes the exact path); an empty vector: the ray leaves at once.
+std::optional<std::vector<std::int64_t>> interval_cover_candidates(const TriangleIndex& index, const Box3& box,
+                                                                   const Vec3<Exact>& origin, const Vec3<Exact>& dir) {
+  using I = CGAL::Interval_nt<>;
+  std::array<I, 3> o, d;
+  for (int k = 0; k < 3; ++k) {
+    const auto oi = enclosing_interval(origin[k]), di = enclosing_interval(dir[k]);
+    o[k] = I(oi.first, oi.second);
+    d[k] = I(di.first, di.second);
+  }
+  double exit_hi = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < 3; ++k) {
+    const Sign sd = exact_sign(dir[k]);
+    if (sd == Sign::Zero) continue;
+    const double face = box_face(box, k, sd == Sign::Positive);
+    // sign(face - o_k) must equal sign(d_k), else exit <= 0.
+    const I gap = I(face) - o[k];
+    Sign sg;
+    if (gap.inf() > 0) sg = Sign::Positive;
+    else if (gap.sup() < 0) sg = Sign::Negative;
+    else sg = exact_sign(Exact(face) - origin[k]);
+    if (sg != sd) return std::vector<std::int64_t>{};
+    if (d[k].inf() > 0 || d[k].sup() < 0) exit_hi = std::min(exit_hi, (gap / d[k]).sup());
+  }
+  if (!std::isfinite(exit_hi)) return std::nullopt;
+  std::vector<std::int64_t> cand;
+  const I s_hi(exit_hi);
+  std::array<I, 3> prev = o;
+  for (int i = 1; i <= kCoverPieces; ++i) {
+    const I s = s_hi * I(double(i) / kCoverPieces);  // i / 32 is exact in binary
+    Box3 b;
+    std::array<I, 3> cur;
+    for (int k = 0; k < 3; ++k) {
+      cur[k] = o[k] + s * d[k];
+      set_box_axis(b, k, std::min(prev[k].inf(), cur[k].inf()), std::max(prev[k].sup(), cur[k].sup()));
+    }
+    if (!std::isfinite(b.lo.x) || !std::isfinite(b.lo.y) || !std::isfinite(b.lo.z) || !std::isfinite(b.hi.x) ||
+        !std::isfinite(b.hi.y) || !std::isfinite(b.hi.z))
+      return std::nullopt;
+    const auto c = index.candidates_in_box(b);
+    cand.insert(cand.end(), c.begin(), c.end());
+    prev = cur;
+  }
+  return cand;
+}
+
 }  // namespace
 
 RayHit ray_first_hit(const Scene& scene, const TriangleIndex& index, const Box3& box, const Vec3<Exact>& origin,
                      const Vec3<Exact>& dir) {
   RayHit best;
   if (box.empty()) return best;
-  // Exit parameter from the scene box.
-  std::optional<Exact> exit;
-  for (int k = 0; k < 3; ++k) {
-    const Sign sd = exact_sign(dir[k]);
-    if (sd == Sign::Zero) continue;
-    const double face = sd == Sign::Positive ? (k == 0 ? box.hi.x : k == 1 ? box.hi.y : box.hi.z)
-                                             : (k == 0 ? box.lo.x : k == 1 ? box.lo.y : box.lo.z);
-    const Exact s = (Exact(face) - origin[k]) / dir[k];
-    if (!exit || s < *exit) exit = s;
-  }
-  if (!exit || exact_sign(*exit) != Sign::Positive) return best;
-  // Candidates: triangles whose boxes meet one of 32 outward-rounded boxes covering the ray inside the box.
-  std::vector<std::int64_t> cand;
-  const int pieces = 32;
-  for (int i = 0; i < pieces; ++i) {
-    const Vec3<Exact> p = origin + (*exit * Exact(i, pieces)) * dir;
-    const Vec3<Exact> q = origin + (*exit * Exact(i + 1, pieces)) * dir;
-    Box3 b;
-    for (int k = 0; k < 3; ++k) {
-      const auto ip = CGAL::to_interval(p[k]), iq = CGAL::to_interval(q[k]);
-      const double lo = std::min(ip.first, iq.first), hi = std::max(ip.second, iq.second);
-      (k == 0 ? b.lo.x : k == 1 ? b.lo.y : b.lo.z) = lo;
-      (k == 0 ? b.hi.x : k == 1 ? b.hi.y : b.hi.z) = hi;
-    }
-    const auto c = index.candidates_in_box(b);
-    cand.insert(cand.end(), c.begin(), c.end());
-  }
+  // Candidates: triangles whose boxes meet the boxes covering the ray inside the scene box (from interval
+  // enclosures; the exact construction only when those cannot bound the exit). Both cover every triangle
+  // the open ray can hit, so the result does not depend on which path ran.
+  std::optional<std::vector<std::int64_t>> cover = interval_cover_candidates(index, box, origin, dir);
+  if (!cover) cover = exact_cover_candidates(index, box, origin, dir);
+  if (!cover || cover->empty()) return best;
+  std::vector<std::int64_t>& cand = *cover;
   std::sort(cand.begin(), cand.end());
   cand.erase(std::unique(cand.begin(), cand.end()), cand.end());
   // Every candidate is decided by the counted predicates above; among the crossed triangles the nearest is
