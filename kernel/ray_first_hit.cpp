@@ -3,6 +3,7 @@
 #include "kernel/filtered_predicate.hpp"
 #include "kernel/predicates.hpp"
 
+#include <CGAL/Gmpzf.h>
 #include <CGAL/Interval_nt.h>
 
 #include <algorithm>
@@ -28,23 +29,63 @@ void set_box_axis(Box3& b, int k, double lo, double hi) {
 }
 
 
-// The ray's origin and direction (exact) with their enclosures, computed once per ray for layers 1 and 2.
+using ExactFloat = CGAL::Gmpzf;  // exact +, -, * on integer mantissas with a binary exponent: no gcd
+
+// A rational vector as w * v = P with P integer and w > 0 the lcm of v's denominators (exact).
+struct HomogeneousVector {
+  Vec3<ExactFloat> p;
+  ExactFloat w;
+};
+
+HomogeneousVector homogeneous(const Vec3<Exact>& v) {
+  mpz_t w, f;
+  mpz_init_set_ui(w, 1);
+  mpz_init(f);
+  for (int k = 0; k < 3; ++k) mpz_lcm(w, w, mpq_denref(v[k].mpq()));
+  HomogeneousVector h;
+  for (int k = 0; k < 3; ++k) {
+    mpz_divexact(f, w, mpq_denref(v[k].mpq()));
+    mpz_mul(f, f, mpq_numref(v[k].mpq()));
+    h.p[k] = ExactFloat(f);
+  }
+  h.w = ExactFloat(w);
+  mpz_clear(f);
+  mpz_clear(w);
+  return h;
+}
+
+// The ray's origin and direction (exact) with their enclosures, computed once per ray for layers 1 and 2,
+// and (on first use) their homogeneous integer forms for layer 3. Every predicate below is a sign of a
+// polynomial homogeneous of some degree in the differences (point - origin) and in the direction, so it
+// keeps its sign when those are multiplied by the positive w_o and w_d: layer 3 evaluates it in ExactFloat
+// on w_o p - P_o and P_d (integers times powers of two), without rationals.
 struct RayInput {
   const Vec3<Exact>& o;
   const Vec3<Exact>& d;
   std::array<std::pair<double, double>, 3> oi, di;
+  mutable std::optional<HomogeneousVector> ho, hd;
   RayInput(const Vec3<Exact>& origin, const Vec3<Exact>& dir) : o(origin), d(dir) {
     for (int k = 0; k < 3; ++k) oi[k] = enclosing_interval(o[k]), di[k] = enclosing_interval(d[k]);
   }
+  // p - origin (layers 1 and 2), or w_o (p - origin) (layer 3).
   template <class NT>
-  Vec3<NT> origin() const {
-    if constexpr (std::is_same_v<NT, Exact>) return o;
-    else return {NT(oi[0]), NT(oi[1]), NT(oi[2])};
+  Vec3<NT> from_origin(const Point3& p) const {
+    if constexpr (std::is_same_v<NT, ExactFloat>) {
+      if (!ho) ho = homogeneous(o);
+      return Vec3<NT>(ho->w * NT(p.x), ho->w * NT(p.y), ho->w * NT(p.z)) - ho->p;
+    } else {
+      return point_as<NT>(p) - Vec3<NT>(NT(oi[0]), NT(oi[1]), NT(oi[2]));
+    }
   }
+  // The direction (layers 1 and 2), or w_d times it (layer 3).
   template <class NT>
   Vec3<NT> direction() const {
-    if constexpr (std::is_same_v<NT, Exact>) return d;
-    else return {NT(di[0]), NT(di[1]), NT(di[2])};
+    if constexpr (std::is_same_v<NT, ExactFloat>) {
+      if (!hd) hd = homogeneous(d);
+      return hd->p;
+    } else {
+      return {NT(di[0]), NT(di[1]), NT(di[2])};
+    }
   }
 };
 
@@ -65,7 +106,7 @@ Vec3<NT> normal_as(const Scene& scene, const SceneTriangle& t) {
 // sign(n . d): zero iff the ray is parallel to t's plane.
 Sign plane_dir_sign(const RayInput& r, const Scene& scene, const SceneTriangle& t) {
   static PredicateCounter counter("ray_plane_dir");
-  return filtered_sign(counter, [&](auto nt) {
+  return filtered_sign<ExactFloat>(counter, [&](auto nt) {
     using NT = typename decltype(nt)::type;
     return dot(normal_as<NT>(scene, t), r.direction<NT>());
   });
@@ -75,9 +116,9 @@ Sign plane_dir_sign(const RayInput& r, const Scene& scene, const SceneTriangle& 
 // s = n . (t0 - o) / n . d.
 Sign plane_offset_sign(const RayInput& r, const Scene& scene, const SceneTriangle& t) {
   static PredicateCounter counter("ray_plane_offset");
-  return filtered_sign(counter, [&](auto nt) {
+  return filtered_sign<ExactFloat>(counter, [&](auto nt) {
     using NT = typename decltype(nt)::type;
-    return dot(normal_as<NT>(scene, t), corner_as<NT>(scene, t, 0) - r.origin<NT>());
+    return dot(normal_as<NT>(scene, t), r.from_origin<NT>(scene.corner(t, 0)));
   });
 }
 
@@ -85,10 +126,10 @@ Sign plane_offset_sign(const RayInput& r, const Scene& scene, const SceneTriangl
 // of the barycentric coordinate, opposite t_k+2, of the point where the ray's line meets the plane.
 Sign edge_side_sign(const RayInput& r, const Scene& scene, const SceneTriangle& t, int k) {
   static PredicateCounter counter("ray_edge_side");
-  return filtered_sign(counter, [&](auto nt) {
+  return filtered_sign<ExactFloat>(counter, [&](auto nt) {
     using NT = typename decltype(nt)::type;
-    const Vec3<NT> o = r.origin<NT>();
-    return dot(cross(corner_as<NT>(scene, t, k) - o, corner_as<NT>(scene, t, (k + 1) % 3) - o), r.direction<NT>());
+    return dot(cross(r.from_origin<NT>(scene.corner(t, k)), r.from_origin<NT>(scene.corner(t, (k + 1) % 3))),
+               r.direction<NT>());
   });
 }
 
@@ -96,11 +137,10 @@ Sign edge_side_sign(const RayInput& r, const Scene& scene, const SceneTriangle& 
 // the origin's side of the edge's line in the plane; true gives sign((e x d) . n), the direction's.
 Sign coplanar_edge_sign(const RayInput& r, const Scene& scene, const SceneTriangle& t, int k, bool of_direction) {
   static PredicateCounter counter("ray_coplanar_edge");
-  return filtered_sign(counter, [&](auto nt) {
+  return filtered_sign<ExactFloat>(counter, [&](auto nt) {
     using NT = typename decltype(nt)::type;
-    const Vec3<NT> tk = corner_as<NT>(scene, t, k);
-    const Vec3<NT> e = corner_as<NT>(scene, t, (k + 1) % 3) - tk;
-    const Vec3<NT> v = of_direction ? r.direction<NT>() : r.origin<NT>() - tk;
+    const Vec3<NT> e = corner_as<NT>(scene, t, (k + 1) % 3) - corner_as<NT>(scene, t, k);
+    const Vec3<NT> v = of_direction ? r.direction<NT>() : -r.from_origin<NT>(scene.corner(t, k));
     return dot(cross(e, v), normal_as<NT>(scene, t));
   });
 }
@@ -108,11 +148,12 @@ Sign coplanar_edge_sign(const RayInput& r, const Scene& scene, const SceneTriang
 // sign(s_t - s_u) times sign(nd_t nd_u), s = no / nd, from no_t nd_u - no_u nd_t (no division).
 Sign hit_order_sign(const RayInput& r, const Scene& scene, const SceneTriangle& t, const SceneTriangle& u) {
   static PredicateCounter counter("ray_hit_order");
-  return filtered_sign(counter, [&](auto nt) {
+  return filtered_sign<ExactFloat>(counter, [&](auto nt) {
     using NT = typename decltype(nt)::type;
-    const Vec3<NT> o = r.origin<NT>(), d = r.direction<NT>();
+    const Vec3<NT> d = r.direction<NT>();
     const Vec3<NT> nt_ = normal_as<NT>(scene, t), nu = normal_as<NT>(scene, u);
-    return dot(nt_, corner_as<NT>(scene, t, 0) - o) * dot(nu, d) - dot(nu, corner_as<NT>(scene, u, 0) - o) * dot(nt_, d);
+    return dot(nt_, r.from_origin<NT>(scene.corner(t, 0))) * dot(nu, d) -
+           dot(nu, r.from_origin<NT>(scene.corner(u, 0))) * dot(nt_, d);
   });
 }
 
