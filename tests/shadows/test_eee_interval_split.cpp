@@ -64,11 +64,14 @@ TEST(EeeIntervalSplit, LinePolynomialsMatchTheEventsLines) {
 }
 
 // Every piece's objects at three rational parameters inside it (middle, near each end) are the oracle's,
-// and neighbouring pieces differ.
+// and neighbouring pieces differ. Two stakes pierce the floor (the first hit passes from a stake to the floor
+// where the lines cross their common segment) and each other.
 TEST(EeeIntervalSplit, PiecesHaveTheOracleEndObjects) {
   int pieces = 0, multi = 0;
   for (unsigned seed = 1; seed <= 3; ++seed) {
-    const Scene s = shadow_test::random_blocker_scene(200 + seed, 4);
+    Scene s = shadow_test::random_blocker_scene(200 + seed, 4);
+    shadow_test::add_object(s, "stake0", {Point3{2, 3, -2}, Point3{8, 4, -2}, Point3{5, 6, 5}}, {{0, 1, 2}});
+    shadow_test::add_object(s, "stake1", {Point3{3, 7, -2}, Point3{6, 1, -1}, Point3{4, 4, 4}}, {{0, 1, 2}});
     const std::vector<int> light = object_triangles(s, "lamp");
     EeeOptions o;
     o.light_triangles = light;
