@@ -12,6 +12,7 @@
 #include <chrono>
 #include <cmath>
 #include <functional>
+#include <map>
 #include <numeric>
 #include <optional>
 #include <stdexcept>
@@ -94,6 +95,29 @@ CellPvs conservative_cell_pvs(const PvsContext& context, const RationalBox3& cel
   }
   std::stable_sort(usable.begin(), usable.end(), [&](std::size_t a, std::size_t b) { return distance[a] < distance[b]; });
 
+  // Pairs of usable walls whose footprints share an endpoint and that do not lie on one line (building
+  // corners, adjacent facades): umbra fusion across walls (wall_pair_hides_exactly), tried when no single
+  // wall proves a target hidden; nearest first.
+  std::vector<std::pair<std::size_t, std::size_t>> corner_pairs;
+  {
+    std::map<std::pair<double, double>, std::vector<std::size_t>> at_end;
+    for (const std::size_t w : usable) {
+      at_end[{walls[w].ax, walls[w].ay}].push_back(w);
+      at_end[{walls[w].bx, walls[w].by}].push_back(w);
+    }
+    for (const auto& [end, list] : at_end)
+      for (std::size_t i = 0; i < list.size(); ++i)
+        for (std::size_t j = i + 1; j < list.size(); ++j) {
+          const WallRectangle &u = walls[list[i]], &v = walls[list[j]];
+          const double dux = u.bx - u.ax, duy = u.by - u.ay, dvx = v.bx - v.ax, dvy = v.by - v.ay;
+          if (dux * dvy - duy * dvx == 0) continue;  // (nearly) one line: merged runs cover it; a proposal only
+          corner_pairs.push_back({list[i], list[j]});
+        }
+    std::stable_sort(corner_pairs.begin(), corner_pairs.end(), [&](const auto& x, const auto& y) {
+      return std::min(distance[x.first], distance[x.second]) < std::min(distance[y.first], distance[y.second]);
+    });
+  }
+
   // The closed convex solids strictly apart from the cell (single-occluder culling, region/convex_occluder),
   // nearest first. solid_blocks_box_pair itself proves both boxes disjoint from the closed solid (so the
   // segment meets the surface inside, never only at its end on the target); strictly_apart is a cheaper
@@ -126,6 +150,11 @@ CellPvs conservative_cell_pvs(const PvsContext& context, const RationalBox3& cel
         hint = static_cast<std::ptrdiff_t>(w);
         return true;
       }
+    for (const auto& [w, u] : corner_pairs) {
+      if (!wall_pair_may_hide(walls[w], prepared[w], walls[u], prepared[u], approx, target)) continue;
+      exact_tests.fetch_add(1, std::memory_order_relaxed);
+      if (wall_pair_hides_exactly(walls[w], walls[u], cell, target)) return true;
+    }
     if (usable_solids.empty()) return false;
     const Point3 target_centre = centre(target_box);
     std::optional<RationalBox3> exact_target;
