@@ -165,7 +165,8 @@ int run_general_orthographic(const AspectOptions& o, const Scene& scene, const s
     std::cerr << w << std::endl;
   const AspectGraph3 g = [&] {
     app::FractionProgress bar("aspect: arrangement", app::progress_wanted(o.quiet));
-    return orthographic_aspect_graph(scene, fronts, bar.callback());
+    // Every cell's sample and sign vector is kept only for the pictures (O(circles) memory per cell).
+    return orthographic_aspect_graph(scene, fronts, bar.callback(), !o.vtp.empty() || !o.png.empty());
   }();
   const ojson j = graph_json(g);
   if (!o.output.empty())

@@ -145,7 +145,7 @@ int run_validate(const ValidateOptions& o) {
       const bool ex = c.exactly_visible[i], re = c.reported_visible[i];
       status[i] = ex == re ? (ex ? kStatusVisible : kStatusHidden) : (re ? kStatusFalseVisible : kStatusFalseInvisible);
     }
-    std::vector<StatusSegment> segs;
+    std::vector<WitnessSegment> segs;
     for (std::size_t i = 0; i < c.false_invisible.size(); ++i)
       segs.push_back({scene.triangles[static_cast<std::size_t>(c.false_invisible[i])].id,
                       rounded(c.false_invisible_witness[i].p), rounded(c.false_invisible_witness[i].q)});
