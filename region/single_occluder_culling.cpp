@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <optional>
 
 namespace exactvis::region {
@@ -75,6 +76,27 @@ SingleOccluderCulling::SingleOccluderCulling(const PvsContext& context, const Ra
   std::stable_sort(usable_walls_.begin(), usable_walls_.end(),
                    [&](std::size_t a, std::size_t b) { return distance[a] < distance[b]; });
 
+  // Pairs of usable walls whose footprints share an endpoint and that do not lie on one line (building
+  // corners, adjacent facades): umbra fusion of two walls (wall_pair_hides_exactly), tried after every single
+  // wall fails; nearest first. Collinear neighbours are skipped: merged runs cover them.
+  {
+    std::map<std::pair<double, double>, std::vector<std::size_t>> at_end;
+    for (const std::size_t w : usable_walls_) {
+      at_end[{walls[w].ax, walls[w].ay}].push_back(w);
+      at_end[{walls[w].bx, walls[w].by}].push_back(w);
+    }
+    for (const auto& [end, list] : at_end)
+      for (std::size_t i = 0; i < list.size(); ++i)
+        for (std::size_t j = i + 1; j < list.size(); ++j) {
+          const WallRectangle &u = walls[list[i]], &v = walls[list[j]];
+          if ((u.bx - u.ax) * (v.by - v.ay) - (u.by - u.ay) * (v.bx - v.ax) == 0) continue;  // a proposal only
+          corner_pairs_.push_back({list[i], list[j]});
+        }
+    std::stable_sort(corner_pairs_.begin(), corner_pairs_.end(), [&](const auto& x, const auto& y) {
+      return std::min(distance[x.first], distance[x.second]) < std::min(distance[y.first], distance[y.second]);
+    });
+  }
+
   // The closed convex solids strictly apart from the cell, nearest first. solid_blocks_box_pair itself proves
   // both boxes disjoint from the closed solid (so the segment meets the surface inside, never only at its end
   // on the target); strictly_apart is a cheaper pre-test of the same kind that skips solids which cannot
@@ -106,6 +128,11 @@ bool SingleOccluderCulling::hides(const UmbraTarget& target, const Box3& target_
       hint = static_cast<std::ptrdiff_t>(w);
       return true;
     }
+  for (const auto& [w, u] : corner_pairs_) {
+    if (!wall_pair_may_hide(walls[w], prepared_[w], walls[u], prepared_[u], approx_, target)) continue;
+    exact_tests_.fetch_add(1, std::memory_order_relaxed);
+    if (wall_pair_hides_exactly(walls[w], walls[u], cell_, target)) return true;
+  }
   if (usable_solids_.empty()) return false;
   const std::vector<ConvexSolid>& solids = context_.solids();
   const Point3 cell_centre = centre(approx_), target_centre = centre(target_box);

@@ -1,6 +1,7 @@
 #pragma once
 // Single-occluder culling from one view cell: the exact proofs that a triangle or a BVH node box is hidden by
-// ONE wall rectangle (region/wall_umbra.hpp, docs/theory.md §5.10) or ONE closed convex solid
+// ONE wall rectangle (region/wall_umbra.hpp, docs/theory.md §5.10), two walls meeting at a footprint endpoint
+// (umbra fusion at a building's corner, wall_pair_hides_exactly, §5.10) or ONE closed convex solid
 // (region/convex_occluder.hpp, §5.9). Shared by method `conservative` (its only hidden test) and method
 // `exact` (a cheap proof tried before Embree rays and the line-space query, §5.8).
 //
@@ -13,6 +14,7 @@
 #include <atomic>
 #include <cstddef>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace exactvis::region {
@@ -30,7 +32,7 @@ class SingleOccluderCulling {
   // True proves that every segment from the closed cell to the closed triangle meets another scene triangle
   // at a point inside the segment (so the triangle is hidden, §5.1); false means not proved. `hint` is the
   // wall of the last proof nearby (or -1): tried first, updated on a wall proof. Thread-safe (hints are the
-  // caller's). Cost: one double test per usable wall, and per solid near the segment between box centres,
+  // caller's). Cost: one double test per usable wall, per corner pair (after the walls), and per solid near the segment between box centres,
   // plus an exact test per proposal.
   bool hides_triangle(std::int64_t triangle, std::ptrdiff_t& hint) const;
 
@@ -51,6 +53,7 @@ class SingleOccluderCulling {
   Box3 approx_;
   std::vector<WallFromCell> prepared_;
   std::vector<std::size_t> usable_walls_, usable_solids_;
+  std::vector<std::pair<std::size_t, std::size_t>> corner_pairs_;  // walls sharing a footprint endpoint
   mutable std::atomic<std::int64_t> exact_tests_{0};
 };
 
