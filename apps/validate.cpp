@@ -145,7 +145,7 @@ int run_validate(const ValidateOptions& o) {
       const bool ex = c.exactly_visible[i], re = c.reported_visible[i];
       status[i] = ex == re ? (ex ? kStatusVisible : kStatusHidden) : (re ? kStatusFalseVisible : kStatusFalseInvisible);
     }
-    std::vector<StatusSegment> segs;
+    std::vector<WitnessSegment> segs;
     for (std::size_t i = 0; i < c.false_invisible.size(); ++i)
       segs.push_back({scene.triangles[static_cast<std::size_t>(c.false_invisible[i])].id,
                       rounded(c.false_invisible_witness[i].p), rounded(c.false_invisible_witness[i].q)});
@@ -341,7 +341,7 @@ const exactvis::app::CommandRegistration registration("validate", 110, [](CLI::A
                   "(default 100)");
   sub->add_option("--clusters", o->clusters, "With --bsp: check every ordered pair of these clusters A,B,...");
   sub->add_option("--occluders", o->occluders,
-                  "With --bsp: leaves (the compiled solid space, default) or brushes (not implemented yet)")
+                  "With --bsp: leaves (the compiled solid space, default) or brushes (the world model's solid brushes, detail brushes included)")
       ->capture_default_str();
   sub->add_option("--obj", o->obj, "With --bsp: write the map's opaque geometry as OBJ");
   sub->add_option("--samples", o->samples, "Random segments cast per source/target pair before the exact query")

@@ -25,4 +25,22 @@ void write_visibility_vtp(const std::string& path, const Scene& scene, const std
                           const std::vector<WitnessSegment>& witnesses,
                           const std::vector<std::vector<Point3>>& source_faces = {});
 
+// The per-cell value array of a triangle-state file: its name (also the active scalars), whether it is a
+// float array (else int), and the values of the witness lines and source polygons (NaN in a float array
+// leaves them uncoloured).
+struct TriangleStateArray {
+  std::string name;
+  bool is_float;
+  double witness_value, source_value;
+};
+
+// The layout both write_visibility_vtp and write_pvs_check_vtp write: the scene's points, then per witness
+// a line cell (its two points appended), per scene triangle a polygon cell, per source face a polygon cell
+// (its points appended); cell arrays "id", "object", `array` and "kind" (1 witness, 0 triangle, 2 source).
+// Input: `values` parallel to scene.triangles (the caller checks the size). Output: the file, written
+// atomically (throws OutputError on failure). Cost: linear in the scene, witnesses and source.
+void write_triangle_state_vtp(const std::string& path, const Scene& scene, const std::vector<int>& values,
+                              const TriangleStateArray& array, const std::vector<WitnessSegment>& witnesses,
+                              const std::vector<std::vector<Point3>>& source_faces);
+
 }  // namespace exactvis
