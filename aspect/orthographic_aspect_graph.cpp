@@ -7,6 +7,7 @@
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/convex_hull_3.h>
+#include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <map>
@@ -34,6 +35,15 @@ struct Constraint {
   int plane = 0;
   char forbidden = '+';
 };
+
+// The circle of normal v: v scaled so that its first largest |component| is +1.
+ExactKey canonical(const Vec3<Exact>& v) {
+  int a = 0;
+  for (int i = 1; i < 3; ++i)
+    if (CGAL::abs(v[i]) > CGAL::abs(v[a])) a = i;
+  const Exact s = v[a];
+  return {v.x / s, v.y / s, v.z / s};
+}
 
 struct Circles {
   std::map<ExactKey, int> index;
@@ -209,16 +219,20 @@ Setup setup(const Scene& scene, const ClosedSolidFronts& fronts) {
   std::vector<Vec3<Exact>> vx(scene.vertices.size());
   for (std::size_t i = 0; i < vx.size(); ++i) vx[i] = to_rational(scene.vertices[i]);
 
-  for (std::size_t i = 0; i < n; ++i) {
-    const auto& t = scene.triangles[i];
-    const auto [fp, fo] = s.circles.add(fronts.fronts[i].outward);
-    s.front_face[i] = {fp, char_of(1, fo)};
-    s.circles.generators[fp].push_back(
-        {static_cast<int>(i), t.v[0], {std::min(t.v[1], t.v[2]), std::max(t.v[1], t.v[2])}});
-    const auto& P = fronts.fronts[i].points;
-    s.has_front[i] = !P.empty();
-    if (P.empty()) continue;
+  // Per triangle, in parallel: its hidden cone's constraints (after pruning), each with the scene edge naming
+  // its circle (for the first constraint of each circle and corner). Then, in triangle order, the circles.
+  struct Cone {
+    bool always_hidden = false, never_hidden = false;
     std::vector<RawConstraint> raw;
+    std::vector<std::array<int, 2>> name;  // per raw constraint: the naming edge, {-2, -2} = already named
+  };
+  std::vector<Cone> cones(n);
+  tbb::parallel_for(std::size_t(0), n, [&](std::size_t i) {
+    const auto& t = scene.triangles[i];
+    const auto& P = fronts.fronts[i].points;
+    if (P.empty()) return;
+    Cone& cone = cones[i];
+    std::vector<RawConstraint>& raw = cone.raw;
     std::set<std::tuple<ExactKey, int, int>> unique_halfspaces;
     bool free_corner = false;
     const FrontHull hull = front_hull(P);
@@ -229,49 +243,46 @@ Setup setup(const Scene& scene, const ClosedSolidFronts& fronts) {
       free_corner = true;
       // The candidate pairs: the hull's edges (every facet of cone(P_t - a) is spanned by a and a hull
       // edge, theory 10.5), or all pairs when P_t is flat.
-      for (const auto& [u, w] : hull.full ? hull.edges : all_pairs(P.size()))
-        {
-          const Vec3<Exact> nv = cross(P[u] - a, P[w] - a);
-          if (nv.x == 0 && nv.y == 0 && nv.z == 0) continue;
-          // Supporting: all of P on one closed side of the plane through a, u, w.
-          int side = 0;
-          bool supporting = true;
-          for (const auto& p : P) {
-            const int sp = CGAL::sign(dot(nv, p - a));
-            if (sp == 0) continue;
-            if (side == 0) side = sp;
-            else if (sp != side) { supporting = false; break; }
-          }
-          if (!supporting || side == 0) continue;
-          // One constraint per half-space (normal up to positive scaling, and side) and corner.
-          int m = 0;
-          for (int c = 1; c < 3; ++c)
-            if (CGAL::abs(nv[c]) > CGAL::abs(nv[m])) m = c;
-          const Exact sc = CGAL::abs(nv[m]);
-          const int hs = side;
-          if (unique_halfspaces.insert({ExactKey{nv.x / sc, nv.y / sc, nv.z / sc}, hs, k}).second)
-            raw.push_back({nv, side, k, u, w});
+      for (const auto& [u, w] : hull.full ? hull.edges : all_pairs(P.size())) {
+        const Vec3<Exact> nv = cross(P[u] - a, P[w] - a);
+        if (nv.x == 0 && nv.y == 0 && nv.z == 0) continue;
+        // Supporting: all of P on one closed side of the plane through a, u, w.
+        int side = 0;
+        bool supporting = true;
+        for (const auto& p : P) {
+          const int sp = CGAL::sign(dot(nv, p - a));
+          if (sp == 0) continue;
+          if (side == 0) side = sp;
+          else if (sp != side) { supporting = false; break; }
         }
+        if (!supporting || side == 0) continue;
+        // One constraint per half-space (normal up to positive scaling, and side) and corner.
+        int m = 0;
+        for (int c = 1; c < 3; ++c)
+          if (CGAL::abs(nv[c]) > CGAL::abs(nv[m])) m = c;
+        const Exact sc = CGAL::abs(nv[m]);
+        if (unique_halfspaces.insert({ExactKey{nv.x / sc, nv.y / sc, nv.z / sc}, side, k}).second)
+          raw.push_back({nv, side, k, u, w});
+      }
     }
     if (!free_corner) {
-      s.always_hidden[i] = true;
-      continue;
+      cone.always_hidden = true;
+      return;
     }
     if (prune_to_facets(raw)) {
-      s.never_hidden[i] = true;
-      continue;
+      cone.never_hidden = true;
+      return;
     }
-    std::set<std::pair<int, char>> seen;
-    std::set<std::pair<int, int>> named;  // (plane, corner vertex)
+    std::set<std::pair<ExactKey, int>> named;  // (circle, corner vertex)
     for (const RawConstraint& rc : raw) {
-      const auto [pl, o] = s.circles.add(rc.normal);
-      const char forbidden = char_of(-rc.side, o);
-      if (seen.insert({pl, forbidden}).second) s.hidden_cone[i].push_back({pl, forbidden});
       const int vtx = t.v[rc.corner];
-      if (!named.insert({pl, vtx}).second) continue;
+      if (!named.insert({canonical(rc.normal), vtx}).second) {
+        cone.name.push_back({-2, -2});
+        continue;
+      }
       // Name the circle by an edge in the plane through a (not through a), preferring one on the line uw.
       const Vec3<Exact>& a = vx[vtx];
-      Generator g{static_cast<int>(i), vtx, {-1, -1}};
+      std::array<int, 2> edge{-1, -1};
       bool on_line = false;
       for (const Edge& e : edges) {
         if (e.a == vtx || e.b == vtx) continue;
@@ -282,10 +293,30 @@ Setup setup(const Scene& scene, const ClosedSolidFronts& fronts) {
         if (c.x == 0 && c.y == 0 && c.z == 0) continue;  // a on the edge's line: no EV set
         const Vec3<Exact> d1 = cross(P[rc.w] - P[rc.u], A - P[rc.u]), d2 = cross(P[rc.w] - P[rc.u], B - P[rc.u]);
         const bool collinear_uw = d1.x == 0 && d1.y == 0 && d1.z == 0 && d2.x == 0 && d2.y == 0 && d2.z == 0;
-        if (g.edge[0] < 0 || (collinear_uw && !on_line)) g.edge = {e.a, e.b}, on_line = collinear_uw;
+        if (edge[0] < 0 || (collinear_uw && !on_line)) edge = {e.a, e.b}, on_line = collinear_uw;
         if (on_line) break;
       }
-      s.circles.generators[pl].push_back(g);
+      cone.name.push_back(edge);
+    }
+  });
+
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto& t = scene.triangles[i];
+    const auto [fp, fo] = s.circles.add(fronts.fronts[i].outward);
+    s.front_face[i] = {fp, char_of(1, fo)};
+    s.circles.generators[fp].push_back(
+        {static_cast<int>(i), t.v[0], {std::min(t.v[1], t.v[2]), std::max(t.v[1], t.v[2])}});
+    s.has_front[i] = !fronts.fronts[i].points.empty();
+    s.always_hidden[i] = cones[i].always_hidden;
+    s.never_hidden[i] = cones[i].never_hidden;
+    std::set<std::pair<int, char>> seen;
+    for (std::size_t r = 0; r < cones[i].raw.size() && !cones[i].always_hidden && !cones[i].never_hidden; ++r) {
+      const RawConstraint& rc = cones[i].raw[r];
+      const auto [pl, o] = s.circles.add(rc.normal);
+      const char forbidden = char_of(-rc.side, o);
+      if (seen.insert({pl, forbidden}).second) s.hidden_cone[i].push_back({pl, forbidden});
+      if (cones[i].name[r][0] != -2)
+        s.circles.generators[pl].push_back({static_cast<int>(i), t.v[rc.corner], cones[i].name[r]});
     }
   }
   return s;
