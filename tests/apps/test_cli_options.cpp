@@ -20,21 +20,16 @@ using cli_test::CliRun;
 
 int lines(const std::string& s) { return static_cast<int>(std::count(s.begin(), s.end(), '\n')); }
 
-class CliOptions : public ::testing::Test {
+class CliOptions : public cli_test::CliTest {
  protected:
+  CliOptions() : CliTest("cli-options") {}
   void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("exactvis_cli_options_" + std::to_string(::getpid()));
-    fs::create_directories(dir_);
     // A target triangle (id 0) at x = 10 and a wall (id 1, 2) at x = 5 covering y in [-10, 0] only.
-    std::ofstream obj(path("scene.obj"));
-    obj << "v 10 -1 -1\nv 10 1 -1\nv 10 0 1\n"
-        << "v 5 -10 -10\nv 5 0 -10\nv 5 0 10\nv 5 -10 10\n"
-        << "f 1 2 3\nf 4 5 6 7\n";
+    write("scene.obj",
+          "v 10 -1 -1\nv 10 1 -1\nv 10 0 1\n"
+          "v 5 -10 -10\nv 5 0 -10\nv 5 0 10\nv 5 -10 10\n"
+          "f 1 2 3\nf 4 5 6 7\n");
   }
-  void TearDown() override { fs::remove_all(dir_); }
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
-  CliRun run(const std::string& args) const { return cli_test::run_exactvis(dir_, args); }
-  fs::path dir_;
 };
 
 TEST_F(CliOptions, CellIsExact) {

@@ -13,15 +13,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
-class CommandLine : public ::testing::Test {
+class CommandLine : public cli_test::CliTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("exactvis_command_line_" + std::to_string(::getpid()));
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  cli_test::CliRun run(const std::string& args) const { return cli_test::run_exactvis(dir_, args); }
-  fs::path dir_;
+  CommandLine() : CliTest("command-line") {}
 };
 
 int lines(const std::string& s) { return static_cast<int>(std::count(s.begin(), s.end(), '\n')); }
@@ -33,7 +27,7 @@ TEST_F(CommandLine, Version) {
 }
 
 TEST_F(CommandLine, ParseErrorsAreOneLineWithExitOne) {
-  const std::string out = (dir_ / "x.obj").string();
+  const std::string out = path("x.obj");
   const std::pair<std::string, std::string> cases[] = {
       {"generate random -n 0 -o " + out, "exactvis generate: error: "},       // a failed Range check
       {"generate nosuchkind -o " + out, "exactvis generate: error: "},        // a failed IsMember check

@@ -20,17 +20,10 @@ namespace {
 
 using cli_test::CliRun;
 
-class UniformCli : public ::testing::Test {
+class UniformCli : public cli_test::CliTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("exactvis_uniform_" + std::to_string(::getpid()));
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
-  CliRun run(const std::string& args) const { return cli_test::run_exactvis(dir_, args); }
+  UniformCli() : CliTest("uniform-cli") {}
   static std::string scene(const std::string& name) { return std::string(EXACTVIS_SOURCE_DIR) + "/scenes/" + name; }
-  fs::path dir_;
 };
 
 int lines(const std::string& s) { return static_cast<int>(std::count(s.begin(), s.end(), '\n')); }

@@ -1,4 +1,6 @@
 // The `exactvis events` subcommand end to end: JSON shape, light selection, .vtp output, bad input.
+#include "tests/cli_test_util.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -12,26 +14,16 @@
 
 namespace {
 
-struct Run {
-  int status;
-  std::string out;
-};
-
-Run run(const std::string& args) {
-  const std::string cmd = std::string(EXACTVIS_BINARY) + " " + args + " 2>/dev/null";
-  FILE* p = popen(cmd.c_str(), "r");
-  Run r{-1, ""};
-  if (!p) return r;
-  std::array<char, 4096> buf;
-  while (std::size_t n = fread(buf.data(), 1, buf.size(), p)) r.out.append(buf.data(), n);
-  r.status = WEXITSTATUS(pclose(p));
-  return r;
+// The suite's scene files and outputs, in one directory of this test process (removed at its end).
+const std::filesystem::path& scratch() {
+  static const cli_test::TempDir dir("events-cli");
+  return dir.path;
 }
 
+cli_test::CliRun run(const std::string& args) { return cli_test::run_exactvis(scratch(), args); }
+
 std::filesystem::path scene_file() {
-  const auto dir = std::filesystem::temp_directory_path() / "exactvis_test_events";
-  std::filesystem::create_directories(dir);
-  const auto path = dir / "cube_floor_lamp.obj";
+  const auto path = scratch() / "cube_floor_lamp.obj";
   std::ofstream f(path);
   f << "o cube\n";
   for (int i = 0; i < 8; ++i) f << "v " << 2 * (i & 1) << " " << 2 * ((i >> 1) & 1) << " " << 2 * ((i >> 2) & 1) << "\n";
@@ -94,7 +86,7 @@ TEST(EventsCli, NoSplitReportsFreeIntervalsOnce) {
 }
 
 TEST(EventsCli, PolygonLightAndVtp) {
-  const auto vtp = std::filesystem::temp_directory_path() / "exactvis_test_events" / "surfaces.vtp";
+  const auto vtp = scratch() / "surfaces.vtp";
   std::filesystem::remove(vtp);
   const auto r = run("events " + scene_file().string() + " --light '0.5,0.5,6;1.5,0.5,6;1.5,1.5,6' --json --vtp " +
                      vtp.string());
@@ -110,9 +102,7 @@ TEST(EventsCli, PolygonLightAndVtp) {
 // A scene with EEE events: three pairwise skew bars (thin triangles) crossing a common family of lines, and a
 // fourth that blocks part of it. Checks the JSON shape of EEE events and --kinds.
 std::filesystem::path skew_bars_file() {
-  const auto dir = std::filesystem::temp_directory_path() / "exactvis_test_events";
-  std::filesystem::create_directories(dir);
-  const auto path = dir / "skew_bars.obj";
+  const auto path = scratch() / "skew_bars.obj";
   std::ofstream f(path);
   // Bar k: triangle with long edge from a_k to b_k and a third vertex off to the side.
   f << "o bars\n"

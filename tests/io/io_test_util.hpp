@@ -1,5 +1,8 @@
 #pragma once
-// Helpers for the io tests: a fresh temporary directory per test and small file writers.
+// Helpers for the io tests: a fresh temporary directory per test (tests/cli_test_util.hpp) and small file
+// readers and writers.
+#include "tests/cli_test_util.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -10,21 +13,7 @@
 
 namespace iotest {
 
-// A unique temporary directory, removed at destruction.
-struct TempDir {
-  std::filesystem::path path;
-  TempDir() {
-    std::string templ = (std::filesystem::temp_directory_path() / "exactvis-io-XXXXXX").string();
-    char* made = mkdtemp(templ.data());
-    if (!made) throw std::runtime_error("mkdtemp failed");
-    path = made;
-  }
-  ~TempDir() {
-    std::error_code ec;
-    std::filesystem::remove_all(path, ec);
-  }
-  std::string file(const std::string& name) const { return (path / name).string(); }
-};
+using cli_test::TempDir;
 
 inline std::string write_file(const std::string& path, const std::string& content) {
   std::ofstream out(path, std::ios::binary);
@@ -32,12 +21,7 @@ inline std::string write_file(const std::string& path, const std::string& conten
   return path;
 }
 
-inline std::string read_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+inline std::string read_file(const std::string& path) { return cli_test::slurp(path); }
 
 // Number of entries in a directory (to check that failed writes leave nothing, not even temp files).
 inline int entries(const std::filesystem::path& dir) {

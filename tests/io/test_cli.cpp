@@ -3,6 +3,7 @@
 #include "io/load_scene.hpp"
 #include "kernel/scene_generators.hpp"
 #include "io_test_util.hpp"
+#include "tests/cli_test_util.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -10,27 +11,14 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
-#include <sys/wait.h>
 
 using iotest::TempDir;
 
 namespace {
 
-struct CliRun {
-  int status;
-  std::string out, err;
-};
+using cli_test::CliRun;
 
-// Runs `exactvis ARGS` with stdout and stderr captured to files in `dir`.
-CliRun run(const TempDir& dir, const std::string& args) {
-  const std::string out = dir.file(".stdout"), err = dir.file(".stderr");
-  const std::string cmd = std::string(EXACTVIS_BINARY) + " " + args + " >" + out + " 2>" + err;
-  const int raw = std::system(cmd.c_str());
-  CliRun r{WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, iotest::read_file(out), iotest::read_file(err)};
-  std::filesystem::remove(out);
-  std::filesystem::remove(err);
-  return r;
-}
+CliRun run(const TempDir& dir, const std::string& args) { return cli_test::run_exactvis(dir.path, args); }
 
 bool exists(const std::string& p) { return std::filesystem::exists(p); }
 

@@ -3,6 +3,7 @@
 // sampler comparison, and bad input (one-line errors, non-zero exit, no output files).
 #include "io/load_scene.hpp"
 #include "oracles/exterior_oracle.hpp"
+#include "oracles/json_rational.hpp"
 #include "tests/cli_test_util.hpp"
 #include "tests/region/exterior_test_scenes.hpp"
 #include "tests/region/oracle_input.hpp"
@@ -26,11 +27,10 @@ namespace {
 
 using cli_test::CliRun;
 
-class ExteriorCli : public ::testing::Test {
+class ExteriorCli : public cli_test::CliTest {
  protected:
+  ExteriorCli() : CliTest("exterior-cli") {}
   void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("exactvis_exterior_cli_" + std::to_string(::getpid()));
-    fs::create_directories(dir_);
     // The slit model (a box whose lid has a slit 2^-20 wide, a target inside: everything visible) and a
     // box inside a box (the inner 12 triangles hidden).
     scene_ = exterior_test::slit_box(std::ldexp(1.0, -21));
@@ -41,7 +41,6 @@ class ExteriorCli : public ::testing::Test {
     write_obj(path("boxes.obj"), outer.scene);
     boxes_ = outer.scene;
   }
-  void TearDown() override { fs::remove_all(dir_); }
   static void write_obj(const std::string& file, const Scene& s) {
     std::ofstream out(file);
     char buf[128];
@@ -51,19 +50,10 @@ class ExteriorCli : public ::testing::Test {
     }
     for (const auto& t : s.triangles) out << "f " << t.v[0] + 1 << " " << t.v[1] + 1 << " " << t.v[2] + 1 << "\n";
   }
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
-  CliRun run(const std::string& args) const { return cli_test::run_exactvis(dir_, args); }
-  fs::path dir_;
   Scene scene_, boxes_;
 };
 
-mpq_class exact(const nlohmann::json& j) {
-  if (j.is_number()) return mpq_class(j.get<double>());
-  mpq_class q(j.get<std::string>());
-  q.canonicalize();
-  return q;
-}
-oracle::QVec vec(const nlohmann::json& j) { return {exact(j[0]), exact(j[1]), exact(j[2])}; }
+using oracle::json_point;
 
 TEST_F(ExteriorCli, CountsOnStdout) {
   const CliRun r = run("exterior " + path("boxes.obj") + " -q");
@@ -85,7 +75,7 @@ TEST_F(ExteriorCli, JsonShapeAndWitnessesRecheckedByOracle) {
     const auto& w = j["witnesses"][std::to_string(id.get<int>())];
     ASSERT_EQ(w.size(), 2u);
     std::string why;
-    EXPECT_TRUE(oracle::exterior_witness_is_valid(os, id.get<std::size_t>(), vec(w[0]), vec(w[1]), &why))
+    EXPECT_TRUE(oracle::exterior_witness_is_valid(os, id.get<std::size_t>(), json_point(w[0]), json_point(w[1]), &why))
         << "triangle " << id << ": " << why;
   }
 }

@@ -2,6 +2,7 @@
 // equal to `exactvis visible --cell ... --triangles all`, witnesses parsed back from JSON and re-checked by
 // the independent oracle, the JSON-lines form (--no-witnesses, --resume after an interruption), shards
 // merged == the unsharded file, --vtp, and one-line errors for bad cells files and options.
+#include "oracles/json_rational.hpp"
 #include "oracles/visibility_oracle.hpp"
 #include "tests/cli_test_util.hpp"
 
@@ -28,14 +29,8 @@ namespace {
 using cli_test::CliRun;
 using cli_test::slurp;
 
-mpq_class exact(const json& j) {
-  if (j.is_number()) return mpq_class(j.get<double>());
-  mpq_class q(j.get<std::string>());
-  q.canonicalize();
-  return q;
-}
-
-oracle::QVec point(const json& j) { return {exact(j[0]), exact(j[1]), exact(j[2])}; }
+using oracle::json_point;
+using oracle::json_rational;
 
 // The triangles of an OBJ written by `exactvis generate` (triangles only, "v" and "f" lines), in id order.
 std::vector<oracle::Triangle> read_obj(const std::string& path) {
@@ -67,17 +62,10 @@ std::string cell_text(const json& box) {
   return s;
 }
 
-class PvsCli : public ::testing::Test {
+class PvsCli : public cli_test::CliTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("exactvis_pvs_cli_" + std::to_string(::getpid()));
-    fs::create_directories(dir_);
-    ASSERT_EQ(run("generate town -n 120 -s 3 -o " + path("town.obj")).status, 0);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
-  CliRun run(const std::string& args) const { return cli_test::run_exactvis(dir_, args); }
-  fs::path dir_;
+  PvsCli() : CliTest("pvs-cli") {}
+  void SetUp() override { ASSERT_EQ(run("generate town -n 120 -s 3 -o " + path("town.obj")).status, 0); }
 };
 
 TEST_F(PvsCli, JsonShapeEqualsVisibleAndWitnessesCheckByOracle) {
@@ -108,11 +96,11 @@ TEST_F(PvsCli, JsonShapeEqualsVisibleAndWitnessesCheckByOracle) {
     hidden_somewhere += 120 - static_cast<std::int64_t>(expected.size());
     oracle::Source src;
     src.is_box = true;
-    src.lo = {exact(cell["box"][0]), exact(cell["box"][1]), exact(cell["box"][2])};
-    src.hi = {exact(cell["box"][3]), exact(cell["box"][4]), exact(cell["box"][5])};
+    src.lo = {json_rational(cell["box"][0]), json_rational(cell["box"][1]), json_rational(cell["box"][2])};
+    src.hi = {json_rational(cell["box"][3]), json_rational(cell["box"][4]), json_rational(cell["box"][5])};
     for (const auto& [id, w] : cell["witnesses"].items()) {
       std::string why;
-      EXPECT_TRUE(oracle::witness_is_valid(os, std::stoul(id), src, point(w[0]), point(w[1]), &why)) << id << ": " << why;
+      EXPECT_TRUE(oracle::witness_is_valid(os, std::stoul(id), src, json_point(w[0]), json_point(w[1]), &why)) << id << ": " << why;
     }
     EXPECT_FALSE(cell["objects"].empty());
   }

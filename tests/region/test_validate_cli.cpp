@@ -1,8 +1,10 @@
 // `exactvis validate` run as a user would (issue #12): the JSON shape of the issue on a scene with known
 // answers and planted errors, witnesses re-checked by the independent oracle after parsing them back, -o
 // equal to --json, the per-cell .vtp files, and bad files (one-line errors, exit 1, no output left behind).
+#include "oracles/json_rational.hpp"
 #include "oracles/visibility_oracle.hpp"
 #include "tests/cli_test_util.hpp"
+#include "tests/region/slit_scene.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -21,46 +23,20 @@ namespace {
 
 using cli_test::CliRun;
 
-class ValidateCli : public ::testing::Test {
+class ValidateCli : public cli_test::CliTest {
  protected:
+  ValidateCli() : CliTest("validate-cli") {}
   void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("exactvis_validate_cli_" + std::to_string(::getpid()));
-    fs::create_directories(dir_);
     // Target 0 behind a slit 1e-9 wide in the wall x = 5 (visible from cell 0), target 1 behind the wall
     // (hidden from cell 0); from cell 1, at the wall's far end beyond y = 10, both are visible.
-    write("slit.obj",
-          "v 10 -1 -1\nv 10 1 -1\nv 10 0 1\n"
-          "v 10 5 -1\nv 10 7 -1\nv 10 6 1\n"
-          "v 5 -10 -10\nv 5 -5e-10 -10\nv 5 -5e-10 10\nv 5 -10 10\n"
-          "v 5 5e-10 -10\nv 5 10 -10\nv 5 10 10\nv 5 5e-10 10\n"
-          "f 1 2 3\nf 4 5 6\nf 7 8 9 10\nf 11 12 13 14\n");
+    write("slit.obj", region_test_slit::kSlitObj);  // tests/region/slit_scene.hpp
     write("cells.json", "{\"cells\": [[-1, -1, -1, 0, 1, 1], [6, 11, -1, 7, 12, 1]]}");
   }
-  void TearDown() override { fs::remove_all(dir_); }
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
-  void write(const std::string& name, const std::string& content) const { std::ofstream(path(name)) << content; }
-  CliRun run(const std::string& args) const { return cli_test::run_exactvis(dir_, args); }
-  fs::path dir_;
 };
 
-mpq_class exact(const nlohmann::json& j) {
-  if (j.is_number()) return mpq_class(j.get<double>());
-  mpq_class q(j.get<std::string>());
-  q.canonicalize();
-  return q;
-}
-
-oracle::QVec point(const nlohmann::json& j) { return {exact(j[0]), exact(j[1]), exact(j[2])}; }
-
-std::vector<oracle::Triangle> slit_scene() {
-  auto v = [](double x, double y, double z) { return oracle::qvec(x, y, z); };
-  return {{v(10, -1, -1), v(10, 1, -1), v(10, 0, 1)},
-          {v(10, 5, -1), v(10, 7, -1), v(10, 6, 1)},
-          {v(5, -10, -10), v(5, -5e-10, -10), v(5, -5e-10, 10)},
-          {v(5, -10, -10), v(5, -5e-10, 10), v(5, -10, 10)},
-          {v(5, 5e-10, -10), v(5, 10, -10), v(5, 10, 10)},
-          {v(5, 5e-10, -10), v(5, 10, 10), v(5, 5e-10, 10)}};
-}
+using oracle::json_point;
+using oracle::json_rational;
+using region_test_slit::slit_scene;
 
 }  // namespace
 
@@ -101,11 +77,11 @@ TEST_F(ValidateCli, JsonShapePlantedErrorsAndWitnesses) {
     oracle::Source src;
     src.is_box = true;
     const auto& box = j["cells"][k]["box"];
-    src.lo = {exact(box[0]), exact(box[1]), exact(box[2])};
-    src.hi = {exact(box[3]), exact(box[4]), exact(box[5])};
+    src.lo = {json_rational(box[0]), json_rational(box[1]), json_rational(box[2])};
+    src.hi = {json_rational(box[3]), json_rational(box[4]), json_rational(box[5])};
     for (const auto& [id, w] : j["cells"][k]["witnesses"].items()) {
       std::string why;
-      EXPECT_TRUE(oracle::witness_is_valid(scene, std::stoul(id), src, point(w[0]), point(w[1]), &why))
+      EXPECT_TRUE(oracle::witness_is_valid(scene, std::stoul(id), src, json_point(w[0]), json_point(w[1]), &why))
           << "cell " << k << " triangle " << id << ": " << why;
     }
   }

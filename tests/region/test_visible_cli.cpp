@@ -1,7 +1,9 @@
 // `exactvis visible` run as a user would: the JSON shape of the issue, exact witnesses re-checked by the
 // independent oracle after parsing them back from JSON, the .vtp output, and bad parameters.
+#include "oracles/json_rational.hpp"
 #include "oracles/visibility_oracle.hpp"
 #include "tests/cli_test_util.hpp"
+#include "tests/region/slit_scene.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -17,7 +19,6 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
-#include <sys/wait.h>
 
 namespace fs = std::filesystem;
 
@@ -26,46 +27,14 @@ namespace {
 using cli_test::CliRun;
 using cli_test::slurp;
 
-class VisibleCli : public ::testing::Test {
+class VisibleCli : public cli_test::CliTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("exactvis_visible_cli_" + std::to_string(::getpid()));
-    fs::create_directories(dir_);
-    // Slit scene: target (face 1) behind a wall of two rectangles with a gap 1e-9 wide; a second target
-    // (face 2) behind the wall where there is no gap.
-    std::ofstream obj(path("slit.obj"));
-    obj.precision(17);
-    obj << "v 10 -1 -1\nv 10 1 -1\nv 10 0 1\n"                     // 1-3 target (id 0)
-        << "v 10 5 -1\nv 10 7 -1\nv 10 6 1\n"                      // 4-6 hidden target (id 1)
-        << "v 5 -10 -10\nv 5 -5e-10 -10\nv 5 -5e-10 10\nv 5 -10 10\n"  // 7-10 left wall
-        << "v 5 5e-10 -10\nv 5 10 -10\nv 5 10 10\nv 5 5e-10 10\n"      // 11-14 right wall
-        << "f 1 2 3\nf 4 5 6\nf 7 8 9 10\nf 11 12 13 14\n";
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
-  CliRun run(const std::string& args) const { return cli_test::run_exactvis(dir_, args); }
-  fs::path dir_;
+  VisibleCli() : CliTest("visible-cli") {}
+  void SetUp() override { write("slit.obj", region_test_slit::kSlitObj); }  // tests/region/slit_scene.hpp
 };
 
-mpq_class exact(const nlohmann::json& j) {
-  if (j.is_number()) return mpq_class(j.get<double>());
-  mpq_class q(j.get<std::string>());
-  q.canonicalize();
-  return q;
-}
-
-oracle::QVec point(const nlohmann::json& j) { return {exact(j[0]), exact(j[1]), exact(j[2])}; }
-
-std::vector<oracle::Triangle> slit_scene() {
-  // The OBJ above, fan-triangulated from each face's first vertex (ids 0, 1, 2-3, 4-5).
-  auto v = [](double x, double y, double z) { return oracle::qvec(x, y, z); };
-  return {{v(10, -1, -1), v(10, 1, -1), v(10, 0, 1)},
-          {v(10, 5, -1), v(10, 7, -1), v(10, 6, 1)},
-          {v(5, -10, -10), v(5, -5e-10, -10), v(5, -5e-10, 10)},
-          {v(5, -10, -10), v(5, -5e-10, 10), v(5, -10, 10)},
-          {v(5, 5e-10, -10), v(5, 10, -10), v(5, 10, 10)},
-          {v(5, 5e-10, -10), v(5, 10, 10), v(5, 5e-10, 10)}};
-}
+using oracle::json_point;
+using region_test_slit::slit_scene;
 
 }  // namespace
 
@@ -88,7 +57,7 @@ TEST_F(VisibleCli, PolygonSourceJsonShapeAndWitnesses) {
   const auto& w = j["results"][0]["witness"];
   ASSERT_EQ(w.size(), 2u);
   std::string why;
-  EXPECT_TRUE(oracle::witness_is_valid(slit_scene(), 0, src, point(w[0]), point(w[1]), &why)) << why;
+  EXPECT_TRUE(oracle::witness_is_valid(slit_scene(), 0, src, json_point(w[0]), json_point(w[1]), &why)) << why;
 }
 
 TEST_F(VisibleCli, CellSourceWritesJsonFileAndVtp) {
@@ -107,8 +76,8 @@ TEST_F(VisibleCli, CellSourceWritesJsonFileAndVtp) {
     if (!e["visible"].get<bool>()) continue;
     ++visible;
     std::string why;
-    EXPECT_TRUE(oracle::witness_is_valid(slit_scene(), e["triangle"].get<std::size_t>(), src, point(e["witness"][0]),
-                                         point(e["witness"][1]), &why))
+    EXPECT_TRUE(oracle::witness_is_valid(slit_scene(), e["triangle"].get<std::size_t>(), src, json_point(e["witness"][0]),
+                                         json_point(e["witness"][1]), &why))
         << why;
   }
   EXPECT_EQ(j["results"][0]["visible"], true);

@@ -1,5 +1,7 @@
 // The complex2d / visibility2d / aspect2d subcommands: documented JSON shape, and one-line errors with a
 // non-zero exit on bad input. Needs the `exactvis` binary (built with the tests by `ninja`).
+#include "tests/cli_test_util.hpp"
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -16,45 +18,18 @@
 
 namespace {
 
-struct CliRun {
-  int status;
-  std::string out, err;
-};
+using cli_test::CliRun;
 
-CliRun run(const std::string& args) {
-  const auto dir = std::filesystem::temp_directory_path();
-  // Per process (ctest -j runs each test in its own process at the same time): no shared capture files.
-  const std::string tag = std::to_string(getpid());
-  const std::string out = (dir / ("exactvis_plane2d_cli." + tag + ".out")).string(),
-                    err = (dir / ("exactvis_plane2d_cli." + tag + ".err")).string();
-  const int raw = std::system((std::string(EXACTVIS_BINARY) + " " + args + " >" + out + " 2>" + err).c_str());
-  auto slurp = [](const std::string& p) {
-    std::ifstream in(p);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-  };
-  CliRun r{WEXITSTATUS(raw), slurp(out), slurp(err)};
-  std::filesystem::remove(out);
-  std::filesystem::remove(err);
-  return r;
+// Scene files written by write() and the commands' captured output, in one directory of this test process
+// (ctest -j runs each test in its own process at the same time), removed when the process ends.
+const cli_test::TempDir& scratch() {
+  static const cli_test::TempDir dir("plane2d-cli");
+  return dir;
 }
 
-// Scene files written by write(), removed when the test process ends.
-struct WrittenFiles {
-  std::vector<std::string> paths;
-  ~WrittenFiles() {
-    std::error_code ec;
-    for (const auto& p : paths) std::filesystem::remove(p, ec);
-  }
-} written_files;
+CliRun run(const std::string& args) { return cli_test::run_exactvis(scratch().path, args); }
 
-std::string write(const std::string& name, const std::string& text) {
-  const auto path = (std::filesystem::temp_directory_path() / ("exactvis_plane2d_" + std::to_string(getpid()) + "_" + name)).string();
-  written_files.paths.push_back(path);
-  std::ofstream(path) << text;
-  return path;
-}
+std::string write(const std::string& name, const std::string& text) { return scratch().write(name, text); }
 
 const char* kTwoSquares = R"({"polygons": [[[0,0],[1,0],[1,1],[0,1]], [[3,0.5],[4,0.5],[4,2],[3,2]]]})";
 
@@ -147,38 +122,11 @@ TEST(Cli2D, BadInputGivesOneLineErrorAndNonZeroExit) {
 namespace {
 
 // A run in its own temporary directory (files the command writes land there; nothing else does).
-struct CliDir {
-  std::filesystem::path path;
-  CliDir() {
-    std::string templ = (std::filesystem::temp_directory_path() / "exactvis-cli2d-XXXXXX").string();
-    if (!mkdtemp(templ.data())) throw std::runtime_error("mkdtemp failed");
-    path = templ;
-  }
-  ~CliDir() {
-    std::error_code ec;
-    std::filesystem::remove_all(path, ec);
-  }
-  std::string file(const std::string& name) const { return (path / name).string(); }
-  std::string write(const std::string& name, const std::string& text) const {
-    std::ofstream(file(name)) << text;
-    return file(name);
-  }
+struct CliDir : cli_test::TempDir {
+  CliDir() : TempDir("cli2d") {}
   // `command` goes through /bin/sh with stdout and stderr captured (outside the directory's listing).
-  CliRun sh(const std::string& command) const {
-    const std::string out = file(".out"), err = file(".err");
-    const int raw = std::system(("(" + command + ") >" + out + " 2>" + err).c_str());
-    auto slurp = [](const std::string& p) {
-      std::ifstream in(p);
-      std::stringstream s;
-      s << in.rdbuf();
-      return s.str();
-    };
-    CliRun r{WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(out), slurp(err)};
-    std::filesystem::remove(out);
-    std::filesystem::remove(err);
-    return r;
-  }
-  CliRun run(const std::string& args) const { return sh(std::string(EXACTVIS_BINARY) + " " + args); }
+  CliRun sh(const std::string& command) const { return cli_test::run_shell(path, command); }
+  CliRun run(const std::string& args) const { return cli_test::run_exactvis(path, args); }
   std::vector<std::string> entries() const {
     std::vector<std::string> names;
     for (const auto& e : std::filesystem::directory_iterator(path)) names.push_back(e.path().filename().string());
