@@ -36,6 +36,7 @@ ordered_json curve_json(const Scene& scene, const shadows::DiscontinuityCurve& c
     g["edges"] = ordered_json::array();
     for (const auto& e : c.edges) g["edges"].push_back({e[0], e[1]});
     g["light_edge"] = c.light_edge;
+    g["light"] = c.blocker_blocker ? "none" : "edge";
   }
   j["generators"] = g;
   if (c.ends_exact)
@@ -165,6 +166,7 @@ ordered_json shadows_json(const Scene& scene, const shadows::ShadowResult& res, 
   j["stats"] = {{"ev_events", res.stats.ev_events},
                 {"eee_events", res.stats.eee_events},
                 {"blocker_ev_events", res.stats.blocker_ev_events},
+                {"blocker_eee_events", res.stats.blocker_eee_events},
                 {"backprojections", res.stats.backprojections},
                 {"conic_arcs", res.stats.conic_arcs},
                 {"chord_curves", res.stats.chord_curves},
@@ -174,6 +176,7 @@ ordered_json shadows_json(const Scene& scene, const shadows::ShadowResult& res, 
                 {"seconds_ev", res.stats.seconds_ev},
                 {"seconds_eee", res.stats.seconds_eee},
                 {"seconds_blocker_ev", res.stats.seconds_blocker_ev},
+                {"seconds_blocker_eee", res.stats.seconds_blocker_eee},
                 {"seconds_events", res.stats.seconds_events},
                 {"seconds_receivers", res.stats.seconds_receivers}};
   return j;

@@ -141,17 +141,19 @@ std::vector<PngPanel> png_panels(const Scene& scene, const std::vector<int>& val
   return panels;
 }
 
-// Cost warning before the work (docs/cli.md): time scaled from docs/performance.md (bench_aspect: 3.9 CPU s
-// for 186 face planes orthographic, growth below m^3; 7.7 s for 62 planes perspective, below m^4).
+// Cost warning before the work (docs/cli.md): time scaled from docs/performance.md (bench_aspect: convex
+// models 3.9 CPU s for 186 face planes orthographic, growth below m^3; 7.7 s for 62 planes perspective, below
+// m^4; non-convex closed solids 41 CPU s for 988 great circles, about 4 m^2 cells at 10 us each).
 std::string cost_warning(std::size_t m, ViewModel view, const char* what = "face planes") {
-  const bool ortho = view == ViewModel::Orthographic;
-  const double seconds = ortho ? 3.9 * std::pow(m / 186.0, 3) : 7.7 * std::pow(m / 62.0, 4);
+  const bool ortho = view == ViewModel::Orthographic, circles = std::string(what) == "great circles";
+  const double seconds = circles ? 41.0 * std::pow(m / 988.0, 2)
+                                 : (ortho ? 3.9 * std::pow(m / 186.0, 3) : 7.7 * std::pow(m / 62.0, 4));
   if (seconds < 60) return "";
   std::ostringstream w;
   w.precision(2);
   w << "aspect: warning: " << m << " " << what << ": the " << (ortho ? "orthographic" : "perspective")
-    << " arrangement has O(m^" << (ortho ? 2 : 3) << ") cells at O(m) each; roughly " << seconds
-    << " s (scaled from docs/performance.md)";
+    << " arrangement has O(m^" << (ortho ? 2 : 3) << ") cells at " << (circles ? "O(1)" : "O(m)")
+    << " each; roughly " << seconds << " s (scaled from docs/performance.md)";
   return w.str();
 }
 
@@ -166,7 +168,8 @@ int run_general_orthographic(const AspectOptions& o, const Scene& scene, const s
     std::cerr << w << std::endl;
   const AspectGraph3 g = [&] {
     app::FractionProgress bar("aspect: arrangement", app::progress_wanted(o.quiet));
-    return orthographic_aspect_graph(scene, fronts, bar.callback());
+    // Every cell's sample and sign vector is kept only for the pictures (O(circles) memory per cell).
+    return orthographic_aspect_graph(scene, fronts, bar.callback(), !o.vtp.empty() || !o.png.empty());
   }();
   const ojson j = graph_json(g);
   if (!o.output.empty())

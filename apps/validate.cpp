@@ -334,7 +334,7 @@ const exactvis::app::CommandRegistration registration("validate", 110, [](CLI::A
                   "(default 100)");
   sub->add_option("--clusters", o->clusters, "With --bsp: check every ordered pair of these clusters A,B,...");
   sub->add_option("--occluders", o->occluders,
-                  "With --bsp: leaves (the compiled solid space, default) or brushes (not implemented yet)")
+                  "With --bsp: leaves (the compiled solid space, default) or brushes (the world model's solid brushes, detail brushes included)")
       ->capture_default_str();
   sub->add_option("--obj", o->obj, "With --bsp: write the map's opaque geometry as OBJ");
   exactvis::app::add_samples_option(*sub, o->samples);

@@ -8,8 +8,9 @@
 // the closed half-spaces of its supporting planes through a and two points of P_t; so the aspect is a
 // function of the signs of d against finitely many central planes: the face planes and those supporting
 // planes (all EV planes: a corner and an edge of the front part). The partition of the viewing sphere by
-// their great circles (aspect/plane_arrangement_3, exact) over-refines the aspect partition; every cell's
-// aspect is read off its sign vector, and aspect/aspect_regions merges cells into regions.
+// their great circles (aspect/great_circle_arrangement, exact) over-refines the aspect partition; every cell's
+// aspect is read off its sign vector (kept up to date while a depth-first walk crosses one circle at a time),
+// and aspect/aspect_regions merges cells into regions.
 #include "aspect/aspect_graph_3d.hpp"
 #include "aspect/closed_solid_fronts.hpp"
 #include "kernel/scene.hpp"
@@ -17,13 +18,14 @@
 namespace exactvis {
 
 // Input: the scene and its fronts (fronts.ok must be true). Output: the orthographic aspect graph (regions,
-// adjacency with the EV events naming the circles of the common boundary, cell counts, and every sphere
-// cell's exact sample with its region in `sampled_cells`). Cost: m central planes (at most n + 3 n |V|^2
-// for n triangles, far fewer after merging equal planes), O(m^2) sphere cells with O(m) exact signs each,
-// plus O(n * constraints) table look-ups per cell.
-// `progress` (optional) receives the fraction done of the arrangement.
+// adjacency with the EV events naming the circles of the common boundary, cell counts, and, when
+// `with_cells`, every sphere cell's exact sample, sign vector and region in `sampled_cells`: O(m) memory per
+// cell, for tests and pictures). Cost: m great circles (at most n + 3 n |V|^2 for n triangles, far fewer
+// after merging equal planes), the O(m^2) cells of their arrangement, then per cell O(1 + the constraints on
+// the circles crossed to reach it) updates of the aspect (one O(m) sign vector is evaluated, at the first face).
+// `progress` (optional) receives the fraction done.
 AspectGraph3 orthographic_aspect_graph(const Scene& scene, const ClosedSolidFronts& fronts,
-                                       void (*progress)(double) = nullptr);
+                                       void (*progress)(double) = nullptr, bool with_cells = true);
 
 // The number of distinct central planes (great circles) the partition uses; for cost estimates.
 std::size_t orthographic_aspect_circles(const Scene& scene, const ClosedSolidFronts& fronts);

@@ -102,7 +102,7 @@ void pair_table(const std::vector<std::string>& sizes, std::uint64_t seed, int r
       const double t0 = cpu_now(), w0 = bench::now();
       const ClosedSolidFronts f = closed_solid_fronts(s);
       if (!f.ok) return (void)std::printf("rejected: %s\n", f.problem.c_str());
-      const AspectGraph3 g = orthographic_aspect_graph(s, f);
+      const AspectGraph3 g = orthographic_aspect_graph(s, f, nullptr, /*with_cells=*/false);
       times.push_back(cpu_now() - t0);
       walls.push_back(bench::now() - w0);
       circles = orthographic_aspect_circles(s, f);

@@ -3,6 +3,8 @@
 #include "kernel/predicates.hpp"
 #include "region/polygon_pair_visibility.hpp"
 
+#include <tbb/parallel_for.h>
+
 #include <map>
 #include <random>
 #include <stdexcept>
@@ -54,13 +56,15 @@ Polygon3 overlap(const Polygon3& f, const Polygon3& h, const Vec3<Exact>& n) {
 
 RationalPoint3 vertex_centroid(const ConvexPolyhedron3& v) { return region::centroid(v.vertices); }
 
-}  // namespace
-
-std::vector<std::vector<Portal>> cluster_portals(const BspMap& map, const std::vector<ConvexPolyhedron3>& volumes) {
-  // Faces of the non-solid world leaves, grouped by their unoriented exact plane.
+// The face pieces between the world leaves of a cluster and the world leaves of any other cluster (and of
+// cluster -1 too when `with_solid_leaves`), per cluster.
+std::vector<std::vector<Portal>> face_pieces(const BspMap& map, const std::vector<ConvexPolyhedron3>& volumes,
+                                             bool with_solid_leaves) {
+  // Faces of the world leaves, grouped by their unoriented exact plane.
   std::map<std::array<Exact, 4>, std::vector<FaceRef>> by_plane;
   for (std::size_t leaf = 0; leaf < map.leaves.size(); ++leaf) {
-    if (!map.world_leaf[leaf] || map.leaves[leaf].cluster < 0 || volumes[leaf].empty()) continue;
+    if (!map.world_leaf[leaf] || volumes[leaf].empty()) continue;
+    if (map.leaves[leaf].cluster < 0 && (!with_solid_leaves || map.leaves[leaf].cluster != -1)) continue;
     const ConvexPolyhedron3& vol = volumes[leaf];
     for (const auto& face : vol.faces) {
       FaceRef ref;
@@ -77,6 +81,7 @@ std::vector<std::vector<Portal>> cluster_portals(const BspMap& map, const std::v
     }
   }
   std::vector<std::vector<Portal>> out(static_cast<std::size_t>(map.cluster_count()));
+  const auto n_clusters = static_cast<std::int32_t>(out.size());
   for (const auto& [key, faces] : by_plane) {
     for (std::size_t i = 0; i < faces.size(); ++i)
       for (std::size_t j = i + 1; j < faces.size(); ++j) {
@@ -89,25 +94,59 @@ std::vector<std::vector<Portal>> cluster_portals(const BspMap& map, const std::v
         Polygon3 piece = overlap(f.polygon, h.polygon, h.plane.normal);
         if (region::is_degenerate(piece)) continue;
         const Box3 box = region::enclosing_box(piece);
-        if (cf < static_cast<std::int32_t>(out.size()))
-          out[static_cast<std::size_t>(cf)].push_back({piece, f.leaf, h.leaf, ch, box});
-        if (ch < static_cast<std::int32_t>(out.size()))
-          out[static_cast<std::size_t>(ch)].push_back({piece, h.leaf, f.leaf, cf, box});
+        if (cf >= 0 && cf < n_clusters) out[static_cast<std::size_t>(cf)].push_back({piece, f.leaf, h.leaf, ch, box});
+        if (ch >= 0 && ch < n_clusters) out[static_cast<std::size_t>(ch)].push_back({piece, h.leaf, f.leaf, cf, box});
       }
   }
   return out;
 }
 
+}  // namespace
+
+std::vector<std::vector<Portal>> cluster_portals(const BspMap& map, const std::vector<ConvexPolyhedron3>& volumes) {
+  return face_pieces(map, volumes, false);
+}
+
+std::vector<std::vector<Portal>> cluster_openings(const BspMap& map, const std::vector<ConvexPolyhedron3>& volumes,
+                                                  const std::vector<OpaqueSolid>& brushes) {
+  std::vector<std::vector<Portal>> pieces = face_pieces(map, volumes, true);
+  std::vector<Box3> boxes(brushes.size());
+  for (std::size_t i = 0; i < brushes.size(); ++i) boxes[i] = region::enclosing_box(brushes[i].volume.vertices);
+  std::vector<std::vector<Portal>> out(pieces.size());
+  tbb::parallel_for(std::size_t(0), pieces.size(), [&](std::size_t c) {
+    for (const Portal& piece : pieces[c]) {
+      std::vector<Polygon3> left{piece.polygon};
+      for (std::size_t i = 0; i < brushes.size() && !left.empty(); ++i) {
+        if (!boxes_meet(boxes[i], piece.box)) continue;
+        std::vector<Polygon3> next;
+        for (const Polygon3& part : left)
+          for (Polygon3& rest : region::polygon_outside(part, brushes[i].volume)) next.push_back(std::move(rest));
+        left = std::move(next);
+      }
+      for (Polygon3& part : left) {
+        const Box3 box = region::enclosing_box(part);
+        out[c].push_back({std::move(part), piece.leaf, piece.neighbour, piece.neighbour_cluster, box});
+      }
+    }
+  });
+  return out;
+}
+
 ClusterVisibilityChecker::ClusterVisibilityChecker(const BspMap& map, Occluders occluders) {
-  if (occluders != Occluders::Leaves)
-    throw std::invalid_argument("--occluders brushes: exact cluster visibility is implemented for leaves only");
   volumes_ = leaf_volumes(map);
   regions_ = cluster_regions(map, volumes_);
-  portals_ = cluster_portals(map, volumes_);
-  for (std::size_t leaf = 0; leaf < map.leaves.size(); ++leaf) {
-    if (!map.world_leaf[leaf] || map.leaves[leaf].cluster != -1 || volumes_[leaf].empty()) continue;
-    solids_.push_back({region::boundary_triangles(volumes_[leaf]), region::enclosing_box(volumes_[leaf].vertices),
-                       static_cast<std::int32_t>(leaf)});
+  if (occluders == Occluders::Leaves) {
+    portals_ = cluster_portals(map, volumes_);
+    for (std::size_t leaf = 0; leaf < map.leaves.size(); ++leaf) {
+      if (!map.world_leaf[leaf] || map.leaves[leaf].cluster != -1 || volumes_[leaf].empty()) continue;
+      solids_.push_back({region::boundary_triangles(volumes_[leaf]), region::enclosing_box(volumes_[leaf].vertices),
+                         volumes_[leaf]});
+    }
+  } else {
+    const std::vector<OpaqueSolid> brushes = opaque_solids(map, Occluders::Brushes);
+    portals_ = cluster_openings(map, volumes_, brushes);
+    for (const OpaqueSolid& b : brushes)
+      solids_.push_back({region::boundary_triangles(b.volume), region::enclosing_box(b.volume.vertices), b.volume});
   }
 }
 
@@ -125,7 +164,7 @@ bool ClusterVisibilityChecker::is_witness(const region::Witness& w) const {
   for (const Solid& s : solids_) {
     if (!boxes_meet(s.box, box)) continue;
     if (!region::segment_is_free(s.triangles, w.p, w.q)) return false;
-    const ConvexPolyhedron3& vol = volumes_[static_cast<std::size_t>(s.leaf)];
+    const ConvexPolyhedron3& vol = s.volume;
     if (region::locate(vol, w.p) != region::Containment::Outside || region::locate(vol, w.q) != region::Containment::Outside)
       return false;
   }
@@ -198,7 +237,7 @@ ClusterVisibility ClusterVisibilityChecker::check_exact(int a, int b, const regi
     throw std::logic_error("cluster visibility: no witness across a shared portal");
   }
 
-  // Random portal-to-portal segments, checked exactly (relint points of portals lie in no solid).
+  // Random portal-to-portal segments, checked exactly (relint points of portals and openings lie in no solid).
   std::mt19937_64 rng(options.seed * 0x9E3779B97F4A7C15ull + static_cast<std::uint64_t>(a) * 1000003u +
                       static_cast<std::uint64_t>(b));
   const int rounds = std::max(1, options.samples / 8);

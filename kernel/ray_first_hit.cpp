@@ -3,31 +3,89 @@
 #include "kernel/filtered_predicate.hpp"
 #include "kernel/predicates.hpp"
 
+#include <CGAL/Gmpzf.h>
+#include <CGAL/Interval_nt.h>
+
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <optional>
 #include <type_traits>
 #include <utility>
 
 namespace exactvis {
 namespace {
+constexpr int kCoverPieces = 32;  // boxes covering a ray inside the scene box (candidate query)
 
-// The ray's origin and direction (exact) with their enclosures, computed once per ray for layers 1 and 2.
+// The box's face coordinate on axis k (hi when `upper`).
+double box_face(const Box3& box, int k, bool upper) {
+  const Point3& p = upper ? box.hi : box.lo;
+  return k == 0 ? p.x : k == 1 ? p.y : p.z;
+}
+
+void set_box_axis(Box3& b, int k, double lo, double hi) {
+  (k == 0 ? b.lo.x : k == 1 ? b.lo.y : b.lo.z) = lo;
+  (k == 0 ? b.hi.x : k == 1 ? b.hi.y : b.hi.z) = hi;
+}
+
+
+using ExactFloat = CGAL::Gmpzf;  // exact +, -, * on integer mantissas with a binary exponent: no gcd
+
+// A rational vector as w * v = P with P integer and w > 0 the lcm of v's denominators (exact).
+struct HomogeneousVector {
+  Vec3<ExactFloat> p;
+  ExactFloat w;
+};
+
+HomogeneousVector homogeneous(const Vec3<Exact>& v) {
+  mpz_t w, f;
+  mpz_init_set_ui(w, 1);
+  mpz_init(f);
+  for (int k = 0; k < 3; ++k) mpz_lcm(w, w, mpq_denref(v[k].mpq()));
+  HomogeneousVector h;
+  for (int k = 0; k < 3; ++k) {
+    mpz_divexact(f, w, mpq_denref(v[k].mpq()));
+    mpz_mul(f, f, mpq_numref(v[k].mpq()));
+    h.p[k] = ExactFloat(f);
+  }
+  h.w = ExactFloat(w);
+  mpz_clear(f);
+  mpz_clear(w);
+  return h;
+}
+
+// The ray's origin and direction (exact) with their enclosures, computed once per ray for layers 1 and 2,
+// and (on first use) their homogeneous integer forms for layer 3. Every predicate below is a sign of a
+// polynomial homogeneous of some degree in the differences (point - origin) and in the direction, so it
+// keeps its sign when those are multiplied by the positive w_o and w_d: layer 3 evaluates it in ExactFloat
+// on w_o p - P_o and P_d (integers times powers of two), without rationals.
 struct RayInput {
   const Vec3<Exact>& o;
   const Vec3<Exact>& d;
   std::array<std::pair<double, double>, 3> oi, di;
+  mutable std::optional<HomogeneousVector> ho, hd;
   RayInput(const Vec3<Exact>& origin, const Vec3<Exact>& dir) : o(origin), d(dir) {
     for (int k = 0; k < 3; ++k) oi[k] = enclosing_interval(o[k]), di[k] = enclosing_interval(d[k]);
   }
+  // p - origin (layers 1 and 2), or w_o (p - origin) (layer 3).
   template <class NT>
-  Vec3<NT> origin() const {
-    if constexpr (std::is_same_v<NT, Exact>) return o;
-    else return {NT(oi[0]), NT(oi[1]), NT(oi[2])};
+  Vec3<NT> from_origin(const Point3& p) const {
+    if constexpr (std::is_same_v<NT, ExactFloat>) {
+      if (!ho) ho = homogeneous(o);
+      return Vec3<NT>(ho->w * NT(p.x), ho->w * NT(p.y), ho->w * NT(p.z)) - ho->p;
+    } else {
+      return point_as<NT>(p) - Vec3<NT>(NT(oi[0]), NT(oi[1]), NT(oi[2]));
+    }
   }
+  // The direction (layers 1 and 2), or w_d times it (layer 3).
   template <class NT>
   Vec3<NT> direction() const {
-    if constexpr (std::is_same_v<NT, Exact>) return d;
-    else return {NT(di[0]), NT(di[1]), NT(di[2])};
+    if constexpr (std::is_same_v<NT, ExactFloat>) {
+      if (!hd) hd = homogeneous(d);
+      return hd->p;
+    } else {
+      return {NT(di[0]), NT(di[1]), NT(di[2])};
+    }
   }
 };
 
@@ -48,7 +106,7 @@ Vec3<NT> normal_as(const Scene& scene, const SceneTriangle& t) {
 // sign(n . d): zero iff the ray is parallel to t's plane.
 Sign plane_dir_sign(const RayInput& r, const Scene& scene, const SceneTriangle& t) {
   static PredicateCounter counter("ray_plane_dir");
-  return filtered_sign(counter, [&](auto nt) {
+  return filtered_sign<ExactFloat>(counter, [&](auto nt) {
     using NT = typename decltype(nt)::type;
     return dot(normal_as<NT>(scene, t), r.direction<NT>());
   });
@@ -58,9 +116,9 @@ Sign plane_dir_sign(const RayInput& r, const Scene& scene, const SceneTriangle& 
 // s = n . (t0 - o) / n . d.
 Sign plane_offset_sign(const RayInput& r, const Scene& scene, const SceneTriangle& t) {
   static PredicateCounter counter("ray_plane_offset");
-  return filtered_sign(counter, [&](auto nt) {
+  return filtered_sign<ExactFloat>(counter, [&](auto nt) {
     using NT = typename decltype(nt)::type;
-    return dot(normal_as<NT>(scene, t), corner_as<NT>(scene, t, 0) - r.origin<NT>());
+    return dot(normal_as<NT>(scene, t), r.from_origin<NT>(scene.corner(t, 0)));
   });
 }
 
@@ -68,10 +126,10 @@ Sign plane_offset_sign(const RayInput& r, const Scene& scene, const SceneTriangl
 // of the barycentric coordinate, opposite t_k+2, of the point where the ray's line meets the plane.
 Sign edge_side_sign(const RayInput& r, const Scene& scene, const SceneTriangle& t, int k) {
   static PredicateCounter counter("ray_edge_side");
-  return filtered_sign(counter, [&](auto nt) {
+  return filtered_sign<ExactFloat>(counter, [&](auto nt) {
     using NT = typename decltype(nt)::type;
-    const Vec3<NT> o = r.origin<NT>();
-    return dot(cross(corner_as<NT>(scene, t, k) - o, corner_as<NT>(scene, t, (k + 1) % 3) - o), r.direction<NT>());
+    return dot(cross(r.from_origin<NT>(scene.corner(t, k)), r.from_origin<NT>(scene.corner(t, (k + 1) % 3))),
+               r.direction<NT>());
   });
 }
 
@@ -79,11 +137,10 @@ Sign edge_side_sign(const RayInput& r, const Scene& scene, const SceneTriangle& 
 // the origin's side of the edge's line in the plane; true gives sign((e x d) . n), the direction's.
 Sign coplanar_edge_sign(const RayInput& r, const Scene& scene, const SceneTriangle& t, int k, bool of_direction) {
   static PredicateCounter counter("ray_coplanar_edge");
-  return filtered_sign(counter, [&](auto nt) {
+  return filtered_sign<ExactFloat>(counter, [&](auto nt) {
     using NT = typename decltype(nt)::type;
-    const Vec3<NT> tk = corner_as<NT>(scene, t, k);
-    const Vec3<NT> e = corner_as<NT>(scene, t, (k + 1) % 3) - tk;
-    const Vec3<NT> v = of_direction ? r.direction<NT>() : r.origin<NT>() - tk;
+    const Vec3<NT> e = corner_as<NT>(scene, t, (k + 1) % 3) - corner_as<NT>(scene, t, k);
+    const Vec3<NT> v = of_direction ? r.direction<NT>() : -r.from_origin<NT>(scene.corner(t, k));
     return dot(cross(e, v), normal_as<NT>(scene, t));
   });
 }
@@ -91,11 +148,12 @@ Sign coplanar_edge_sign(const RayInput& r, const Scene& scene, const SceneTriang
 // sign(s_t - s_u) times sign(nd_t nd_u), s = no / nd, from no_t nd_u - no_u nd_t (no division).
 Sign hit_order_sign(const RayInput& r, const Scene& scene, const SceneTriangle& t, const SceneTriangle& u) {
   static PredicateCounter counter("ray_hit_order");
-  return filtered_sign(counter, [&](auto nt) {
+  return filtered_sign<ExactFloat>(counter, [&](auto nt) {
     using NT = typename decltype(nt)::type;
-    const Vec3<NT> o = r.origin<NT>(), d = r.direction<NT>();
+    const Vec3<NT> d = r.direction<NT>();
     const Vec3<NT> nt_ = normal_as<NT>(scene, t), nu = normal_as<NT>(scene, u);
-    return dot(nt_, corner_as<NT>(scene, t, 0) - o) * dot(nu, d) - dot(nu, corner_as<NT>(scene, u, 0) - o) * dot(nt_, d);
+    return dot(nt_, r.from_origin<NT>(scene.corner(t, 0))) * dot(nu, d) -
+           dot(nu, r.from_origin<NT>(scene.corner(u, 0))) * dot(nt_, d);
   });
 }
 
@@ -142,39 +200,100 @@ std::optional<Exact> coplanar_hit(const RayInput& r, const Scene& scene, const S
   return entry;
 }
 
+// Candidates of the exact path: triangles whose boxes meet one of 32 outward-rounded boxes covering the ray
+// inside the box, the exit parameter constructed exactly. Used when the interval path below cannot bound
+// the exit (direction components too small for their enclosures to exclude 0). nullopt: the ray leaves the
+// box at once (no hit).
+std::optional<std::vector<std::int64_t>> exact_cover_candidates(const TriangleIndex& index, const Box3& box,
+                                                                const Vec3<Exact>& origin, const Vec3<Exact>& dir) {
+  std::optional<Exact> exit;
+  for (int k = 0; k < 3; ++k) {
+    const Sign sd = exact_sign(dir[k]);
+    if (sd == Sign::Zero) continue;
+    const Exact s = (Exact(box_face(box, k, sd == Sign::Positive)) - origin[k]) / dir[k];
+    if (!exit || s < *exit) exit = s;
+  }
+  if (!exit || exact_sign(*exit) != Sign::Positive) return std::nullopt;
+  std::vector<std::int64_t> cand;
+  for (int i = 0; i < kCoverPieces; ++i) {
+    const Vec3<Exact> p = origin + (*exit * Exact(i, kCoverPieces)) * dir;
+    const Vec3<Exact> q = origin + (*exit * Exact(i + 1, kCoverPieces)) * dir;
+    Box3 b;
+    for (int k = 0; k < 3; ++k) {
+      const auto ip = CGAL::to_interval(p[k]), iq = CGAL::to_interval(q[k]);
+      set_box_axis(b, k, std::min(ip.first, iq.first), std::max(ip.second, iq.second));
+    }
+    const auto c = index.candidates_in_box(b);
+    cand.insert(cand.end(), c.begin(), c.end());
+  }
+  return cand;
+}
+
+// The same cover from interval enclosures only (no rational constructed): the exit parameter is bounded
+// above by the smallest sup of (face_k - o_k) / d_k over the axes whose direction enclosure excludes 0 (a
+// larger bound only adds candidates), and the piece ends o + s_i d are enclosed by interval arithmetic, so
+// each piece box contains the exact segment [o + s_i d, o + s_i+1 d]. Whether the ray leaves the box at once
+// (exit <= 0) is decided exactly by signs: exit > 0 iff sign(face_k - o_k) = sign(d_k) on every axis with
+// d_k != 0 (the interval decides, the rationals only when it cannot). nullopt: no interval bound (the caller
+// takes the exact path); an empty vector: the ray leaves at once.
+std::optional<std::vector<std::int64_t>> interval_cover_candidates(const TriangleIndex& index, const Box3& box,
+                                                                   const Vec3<Exact>& origin, const Vec3<Exact>& dir) {
+  using I = CGAL::Interval_nt<>;
+  std::array<I, 3> o, d;
+  for (int k = 0; k < 3; ++k) {
+    const auto oi = enclosing_interval(origin[k]), di = enclosing_interval(dir[k]);
+    o[k] = I(oi.first, oi.second);
+    d[k] = I(di.first, di.second);
+  }
+  double exit_hi = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < 3; ++k) {
+    const Sign sd = exact_sign(dir[k]);
+    if (sd == Sign::Zero) continue;
+    const double face = box_face(box, k, sd == Sign::Positive);
+    // sign(face - o_k) must equal sign(d_k), else exit <= 0.
+    const I gap = I(face) - o[k];
+    Sign sg;
+    if (gap.inf() > 0) sg = Sign::Positive;
+    else if (gap.sup() < 0) sg = Sign::Negative;
+    else sg = exact_sign(Exact(face) - origin[k]);
+    if (sg != sd) return std::vector<std::int64_t>{};
+    if (d[k].inf() > 0 || d[k].sup() < 0) exit_hi = std::min(exit_hi, (gap / d[k]).sup());
+  }
+  if (!std::isfinite(exit_hi)) return std::nullopt;
+  std::vector<std::int64_t> cand;
+  const I s_hi(exit_hi);
+  std::array<I, 3> prev = o;
+  for (int i = 1; i <= kCoverPieces; ++i) {
+    const I s = s_hi * I(double(i) / kCoverPieces);  // i / 32 is exact in binary
+    Box3 b;
+    std::array<I, 3> cur;
+    for (int k = 0; k < 3; ++k) {
+      cur[k] = o[k] + s * d[k];
+      set_box_axis(b, k, std::min(prev[k].inf(), cur[k].inf()), std::max(prev[k].sup(), cur[k].sup()));
+    }
+    if (!std::isfinite(b.lo.x) || !std::isfinite(b.lo.y) || !std::isfinite(b.lo.z) || !std::isfinite(b.hi.x) ||
+        !std::isfinite(b.hi.y) || !std::isfinite(b.hi.z))
+      return std::nullopt;
+    const auto c = index.candidates_in_box(b);
+    cand.insert(cand.end(), c.begin(), c.end());
+    prev = cur;
+  }
+  return cand;
+}
+
 }  // namespace
 
 RayHit ray_first_hit(const Scene& scene, const TriangleIndex& index, const Box3& box, const Vec3<Exact>& origin,
                      const Vec3<Exact>& dir) {
   RayHit best;
   if (box.empty()) return best;
-  // Exit parameter from the scene box.
-  std::optional<Exact> exit;
-  for (int k = 0; k < 3; ++k) {
-    const Sign sd = exact_sign(dir[k]);
-    if (sd == Sign::Zero) continue;
-    const double face = sd == Sign::Positive ? (k == 0 ? box.hi.x : k == 1 ? box.hi.y : box.hi.z)
-                                             : (k == 0 ? box.lo.x : k == 1 ? box.lo.y : box.lo.z);
-    const Exact s = (Exact(face) - origin[k]) / dir[k];
-    if (!exit || s < *exit) exit = s;
-  }
-  if (!exit || exact_sign(*exit) != Sign::Positive) return best;
-  // Candidates: triangles whose boxes meet one of 32 outward-rounded boxes covering the ray inside the box.
-  std::vector<std::int64_t> cand;
-  const int pieces = 32;
-  for (int i = 0; i < pieces; ++i) {
-    const Vec3<Exact> p = origin + (*exit * Exact(i, pieces)) * dir;
-    const Vec3<Exact> q = origin + (*exit * Exact(i + 1, pieces)) * dir;
-    Box3 b;
-    for (int k = 0; k < 3; ++k) {
-      const auto ip = CGAL::to_interval(p[k]), iq = CGAL::to_interval(q[k]);
-      const double lo = std::min(ip.first, iq.first), hi = std::max(ip.second, iq.second);
-      (k == 0 ? b.lo.x : k == 1 ? b.lo.y : b.lo.z) = lo;
-      (k == 0 ? b.hi.x : k == 1 ? b.hi.y : b.hi.z) = hi;
-    }
-    const auto c = index.candidates_in_box(b);
-    cand.insert(cand.end(), c.begin(), c.end());
-  }
+  // Candidates: triangles whose boxes meet the boxes covering the ray inside the scene box (from interval
+  // enclosures; the exact construction only when those cannot bound the exit). Both cover every triangle
+  // the open ray can hit, so the result does not depend on which path ran.
+  std::optional<std::vector<std::int64_t>> cover = interval_cover_candidates(index, box, origin, dir);
+  if (!cover) cover = exact_cover_candidates(index, box, origin, dir);
+  if (!cover || cover->empty()) return best;
+  std::vector<std::int64_t>& cand = *cover;
   std::sort(cand.begin(), cand.end());
   cand.erase(std::unique(cand.begin(), cand.end()), cand.end());
   // Every candidate is decided by the counted predicates above; among the crossed triangles the nearest is

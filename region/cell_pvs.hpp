@@ -66,6 +66,8 @@ struct PvsOptions {
   int box_rays = 32;        // Embree rays per BVH node to its triangles: one reaching the subtree skips the
                             // node's (exact) hidden-box test
   int min_cull = 16;        // hidden-box tests only for nodes of at least this many triangles
+  bool occluder_proofs = true;  // method `exact`: try the single wall / convex solid proofs of method
+                                // `conservative` (region/single_occluder_culling.hpp) before the line-space tests
   // Called with the number of triangles decided so far in the current cell (thread-safe callers only:
   // it is called from the worker threads), e.g. for a progress bar. May be empty.
   std::function<void(std::int64_t decided)> on_progress;
@@ -83,7 +85,9 @@ struct CellPvsStats {
   std::int64_t visible = 0;
   std::int64_t accepted_by_rays = 0;   // visible through an exactly re-checked Embree proposal
   std::int64_t exact_queries = 0;      // triangles decided by the exact from-region query
-  std::int64_t culled = 0;             // triangles proved hidden by a hidden hierarchy box (no own query)
+  std::int64_t culled = 0;             // triangles proved hidden without their own line-space query: by a
+                                       // hidden hierarchy box or a single-occluder proof
+  std::int64_t culled_by_occluders = 0;  // of those, by one wall or one convex solid (not in JSON files)
   std::int64_t boxes_tested = 0;       // exact hidden-box tests run
   std::int64_t boxes_culled = 0;       // boxes proved hidden
   std::int64_t rays_cast = 0;          // method `sampled`: random rays cast from the cell

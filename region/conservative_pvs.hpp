@@ -9,7 +9,9 @@
 //   (region/wall_umbra.hpp): the target's top-view footprint in the wall's 2D umbra from the cell's
 //   footprint, and the vertical umbra bound in every directional plane. Walls come merged into maximal runs
 //   (a facade strip, a column between windows), which is the vertical/horizontal umbra merging of a wall's
-//   own pieces. The scene's triangle hierarchy (region/triangle_bvh.hpp) is traversed from the root: a
+//   own pieces. When no single wall proves a target hidden, pairs of walls meeting at a footprint endpoint
+//   (building corners) are tried (wall_pair_hides_exactly: umbra fusion across two adjacent walls).
+//   The scene's triangle hierarchy (region/triangle_bvh.hpp) is traversed from the root: a
 //   node box proved hidden by one wall hides its whole subtree.
 // - Other scenes (fallback): the same wall proofs for the scene's vertical rectangles, when it has any
 //   (e.g. tree trunks), then single-occluder culling by the scene's closed convex solids

@@ -171,4 +171,30 @@ Containment locate(const ConvexPolyhedron3& poly, const RationalPoint3& x) {
   return boundary ? Containment::Boundary : Containment::Interior;
 }
 
+std::vector<Polygon3> polygon_outside(const Polygon3& poly, const ConvexPolyhedron3& solid) {
+  if (solid.empty()) return {poly};
+  // A separating face plane: poly is on its closed outer side (and not in the plane).
+  for (const auto& face : solid.faces) {
+    bool below = false, above = false;
+    for (const RationalPoint3& x : poly) {
+      const Sign s = plane_side(face.plane, x);
+      below |= s == Sign::Negative;
+      above |= s == Sign::Positive;
+    }
+    if (below && !above) return {poly};
+  }
+  std::vector<Polygon3> out;
+  Polygon3 rest = poly;
+  for (const auto& face : solid.faces) {
+    bool off_plane = false;
+    for (const RationalPoint3& x : rest) off_plane |= plane_side(face.plane, x) != Sign::Zero;
+    if (!off_plane) continue;  // rest lies in this face's plane: nothing of it is strictly outside the plane
+    Polygon3 outer = clip_polygon(rest, face.plane.flipped());
+    if (!is_degenerate(outer)) out.push_back(std::move(outer));
+    rest = clip_polygon(rest, face.plane);
+    if (is_degenerate(rest)) break;
+  }
+  return out;
+}
+
 }  // namespace exactvis::region

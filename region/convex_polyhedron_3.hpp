@@ -49,4 +49,13 @@ enum class Containment { Outside, Boundary, Interior };
 // Where x lies relative to the closed polyhedron (exact, filtered). The empty polyhedron contains nothing.
 Containment locate(const ConvexPolyhedron3& poly, const RationalPoint3& x);
 
+// The part of a convex polygon outside a closed convex polyhedron, as convex polygons of positive area:
+// piece k is poly ∩ {h_1 >= 0, ..., h_{k-1} >= 0, h_k <= 0} over the solid's inward face planes h_i, skipping
+// planes that contain poly (docs/theory.md §8.2). The pieces' interiors are disjoint, they cover poly minus
+// the solid up to a set of zero area, and the relative interior of every piece lies outside the closed solid
+// (strictly on the outer side of its h_k). Returns {poly} when one face plane has poly on its closed outer
+// side (poly meets the solid in at most an edge); nothing when poly lies in the solid. Requires poly convex
+// with positive area. Exact. Cost O(faces * poly size).
+std::vector<Polygon3> polygon_outside(const Polygon3& poly, const ConvexPolyhedron3& solid);
+
 }  // namespace exactvis::region

@@ -4,6 +4,7 @@
 #include "region/cell_visibility.hpp"
 #include "region/from_region_visibility.hpp"
 #include "region/ray_witness.hpp"
+#include "region/single_occluder_culling.hpp"
 #include "util/for_each_index.hpp"
 #include "util/mix_seed.hpp"
 
@@ -24,6 +25,7 @@ namespace {
 struct TriangleAnswer {
   bool visible = false;
   bool by_rays = false;
+  bool by_occluder = false;  // proved hidden by one wall or one convex solid
   std::optional<Witness> witness;
   VisibilityStats stats;
 };
@@ -41,13 +43,22 @@ CellPvs exact_cell_pvs(const PvsContext& context, const RationalBox3& cell, cons
   std::vector<TriangleAnswer> answers(n);
   std::atomic<std::int64_t> decided{0};
 
-  auto decide = [&](std::size_t i) {
+  // Single-occluder proofs (one wall or one convex solid, region/single_occluder_culling.hpp): exact and
+  // cheap, so they run before the line-space box test on every node, and on each triangle the rays do not
+  // accept before its exact query. They only ever hide (docs/theory.md §5.8).
+  std::optional<SingleOccluderCulling> proofs;
+  if (options.occluder_proofs) proofs.emplace(context, cell);
+  const bool use_proofs = proofs && proofs->any();
+  // `hint` (null: no single-occluder proofs) is the wall of the last proof nearby.
+  auto decide = [&](std::size_t i, std::ptrdiff_t* hint) {
     const auto t = static_cast<std::int64_t>(i);
     TriangleAnswer& a = answers[i];
     std::mt19937_64 rng(mix_seed(options.query.seed, i));
     if (auto w = ray_witness(context, cell, approx, t, options.rays, rng)) {
       a.visible = a.by_rays = true;
       a.witness = std::move(w);
+    } else if (hint && proofs->hides_triangle(t, *hint)) {
+      a.by_occluder = true;
     } else {
       VisibilityResult r = visible_from_box(scene, finder, cell, t, options.query);
       a.visible = r.visible;
@@ -110,36 +121,45 @@ CellPvs exact_cell_pvs(const PvsContext& context, const RationalBox3& cell, cons
     boxes_culled += hidden ? 1 : 0;
     return hidden;
   };
-  std::function<void(int)> visit = [&](int index) {
+  auto cull = [&](const BvhNode& node, char how) {
+    for (int i = node.begin; i < node.end; ++i) culled[bvh.order[i]] = how;
+    const std::int64_t d = decided.fetch_add(node.end - node.begin) + (node.end - node.begin);
+    if (options.on_progress) options.on_progress(d);
+  };
+  std::function<void(int, std::ptrdiff_t)> visit = [&](int index, std::ptrdiff_t hint) {
     const BvhNode& node = bvh.nodes[index];
-    if (box_hidden(index)) {
-      for (int i = node.begin; i < node.end; ++i) culled[bvh.order[i]] = 1;
-      const std::int64_t d = decided.fetch_add(node.end - node.begin) + (node.end - node.begin);
-      if (options.on_progress) options.on_progress(d);
-      return;
-    }
+    if (use_proofs && node.end - node.begin > 1 && proofs->hides_node(node, hint)) return cull(node, 2);
+    if (box_hidden(index)) return cull(node, 1);
     if (node.left < 0) {
-      for (int i = node.begin; i < node.end; ++i) decide(static_cast<std::size_t>(bvh.order[i]));
+      for (int i = node.begin; i < node.end; ++i) decide(static_cast<std::size_t>(bvh.order[i]), use_proofs ? &hint : nullptr);
       return;
     }
     if (options.threads == 1) {
-      visit(node.left);
-      visit(node.right);
+      visit(node.left, hint);
+      visit(node.right, hint);
     } else {
-      tbb::parallel_invoke([&] { visit(node.left); }, [&] { visit(node.right); });
+      tbb::parallel_invoke([&] { visit(node.left, hint); }, [&] { visit(node.right, hint); });
     }
   };
   tbb::task_arena arena(options.threads > 0 ? options.threads : tbb::task_arena::automatic);
-  if (options.hierarchy && !bvh.nodes.empty()) arena.execute([&] { visit(0); });
-  else arena.execute([&] { for_each_index(n, options.threads != 1, 4, decide); });
+  if (options.hierarchy && !bvh.nodes.empty()) arena.execute([&] { visit(0, -1); });
+  else
+    arena.execute([&] {
+      for_each_index(n, options.threads != 1, 4, [&](std::size_t i) {
+        std::ptrdiff_t hint = -1;
+        decide(i, use_proofs ? &hint : nullptr);
+      });
+    });
 
   CellPvs out;
   out.cell = cell;
   out.stats.triangles = static_cast<std::int64_t>(n);
   for (std::size_t i = 0; i < n; ++i) {
     const TriangleAnswer& a = answers[i];
-    if (culled[i]) ++out.stats.culled;
-    else if (a.by_rays) ++out.stats.accepted_by_rays;
+    if (culled[i] || a.by_occluder) ++out.stats.culled;
+    if (culled[i] == 2 || a.by_occluder) ++out.stats.culled_by_occluders;
+    if (culled[i] || a.by_occluder) continue;
+    if (a.by_rays) ++out.stats.accepted_by_rays;
     else {
       ++out.stats.exact_queries;
       accumulate(out.stats.query, a.stats);

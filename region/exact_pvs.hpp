@@ -1,11 +1,13 @@
 #pragma once
 // The exact PVS of one view cell (method `exact` of `exactvis pvs`): every scene triangle decided exactly.
 //
-// A BVH over the triangles (region/triangle_bvh.hpp) is traversed from the root; a node whose box Embree rays
-// do not obviously reach gets the exact hidden-box test (region/box_visibility.hpp) with the triangles outside
-// its subtree as occluders, and a hidden box hides its whole subtree (docs/theory.md §5.8). Then per remaining
+// A BVH over the triangles (region/triangle_bvh.hpp) is traversed from the root; a node proved hidden by one
+// wall or one convex solid (region/single_occluder_culling.hpp, the proofs of method `conservative`) is culled
+// with no line-space query; a node whose box Embree rays do not obviously reach gets the exact hidden-box
+// test (region/box_visibility.hpp) with the triangles outside its subtree as occluders, and a hidden box hides its whole subtree (docs/theory.md §5.8). Then per remaining
 // triangle T, on all cores: Embree rays from the cell to T propose witnesses, and the first one that
-// passes the exact check (region/ray_witness.hpp) makes T visible; otherwise the exact from-region query of
+// passes the exact check (region/ray_witness.hpp) makes T visible; otherwise a single-occluder proof may
+// show T hidden; otherwise the exact from-region query of
 // region/from_region_visibility.hpp decides T (visible with an exactly checked witness, or proved hidden).
 // So the answer equals `exactvis visible --cell ... --triangles all` on every triangle (docs/theory.md §5.7).
 #include "region/cell_pvs.hpp"
@@ -16,8 +18,8 @@ namespace exactvis::region {
 // (threads outside 0 .. kMaxThreads: std::invalid_argument). Output: the visible triangles (sorted by
 // index, each with a witness) and counters. Answers, witnesses and counters do not depend on the thread
 // count (each triangle's random choices are seeded by options.query.seed and its index). Cost: n ray
-// batches plus one exact query per triangle the rays do not accept, minus the culled subtrees, plus the box
-// tests.
+// batches plus one exact query per triangle the rays do not accept and no single occluder hides, minus the
+// culled subtrees, plus the box tests and the single-occluder tests (double tests per usable wall / solid).
 CellPvs exact_cell_pvs(const PvsContext& context, const RationalBox3& cell, const PvsOptions& options);
 
 }  // namespace exactvis::region

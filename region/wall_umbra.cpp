@@ -21,10 +21,12 @@ int sgn(const NT& v) {
   return v > NT(0) ? 1 : (v < NT(0) ? -1 : 0);
 }
 
-// The test of wall_umbra.hpp in number type NT (double: a proposal; Exact: the proof).
+// Conditions (i) and (iii) of wall_umbra.hpp for one wall in number type NT: the cell and every q strictly on
+// opposite sides of the wall's line, and the crossing height of every cell-to-target segment with that line
+// within the wall's heights.
 template <class NT>
-bool hides(const WallRectangle& wall, const std::array<P2<NT>, 4>& cell_xy, const NT& cz0, const NT& cz1,
-           const std::vector<P2<NT>>& q, const NT& tz0, const NT& tz1) {
+bool crossing_height_within(const WallRectangle& wall, const std::array<P2<NT>, 4>& cell_xy, const NT& cz0,
+                            const NT& cz1, const std::vector<P2<NT>>& q, const NT& tz0, const NT& tz1) {
   if (q.empty()) return false;
   const P2<NT> a{NT(wall.ax), NT(wall.ay)}, b{NT(wall.bx), NT(wall.by)};
   const int s = sgn(cross(a, b, cell_xy[0]));
@@ -43,18 +45,64 @@ bool hides(const WallRectangle& wall, const std::array<P2<NT>, 4>& cell_xy, cons
     if (j == 0 || v < b_min) b_min = v;
     if (j == 0 || v > b_max) b_max = v;
   }
-  // Vertical component first (cheap): the crossing height stays within the wall.
   const NT wl(wall.z_lo), wh(wall.z_hi);
   for (const NT lambda : {a_min / (a_min + b_max), a_max / (a_max + b_min)}) {
     const NT one_minus = NT(1) - lambda;
     if (one_minus * cz1 + lambda * tz1 > wh) return false;
     if (one_minus * cz0 + lambda * tz0 < wl) return false;
   }
-  // Horizontal component: every corner-to-point segment crosses [a, b] (a, b on opposite closed sides).
+  return true;
+}
+
+// Does the closed segment c p meet the wall's footprint [a, b]? Valid when c and p lie strictly on opposite
+// sides of the line ab (then: iff a and b lie on opposite closed sides of the line cp).
+template <class NT>
+bool crosses_footprint(const WallRectangle& wall, const P2<NT>& c, const P2<NT>& p) {
+  const P2<NT> a{NT(wall.ax), NT(wall.ay)}, b{NT(wall.bx), NT(wall.by)};
+  return sgn(cross(c, p, a)) * sgn(cross(c, p, b)) <= 0;
+}
+
+// The test of wall_umbra.hpp in number type NT (double: a proposal; Exact: the proof).
+template <class NT>
+bool hides(const WallRectangle& wall, const std::array<P2<NT>, 4>& cell_xy, const NT& cz0, const NT& cz1,
+           const std::vector<P2<NT>>& q, const NT& tz0, const NT& tz1) {
+  // Vertical component first (cheap): the crossing height stays within the wall.
+  if (!crossing_height_within(wall, cell_xy, cz0, cz1, q, tz0, tz1)) return false;
+  // Horizontal component: every corner-to-point segment crosses [a, b].
   for (const auto& c : cell_xy)
     for (const auto& p : q)
-      if (sgn(cross(c, p, a)) * sgn(cross(c, p, b)) > 0) return false;
+      if (!crosses_footprint(wall, c, p)) return false;
   return true;
+}
+
+// The two-wall test (wall_pair_hides_exactly) in number type NT.
+template <class NT>
+bool pair_hides(const WallRectangle& w1, const WallRectangle& w2, const std::array<P2<NT>, 4>& cell_xy, const NT& cz0,
+                const NT& cz1, const std::vector<P2<NT>>& q, const NT& tz0, const NT& tz1) {
+  if (!crossing_height_within(w1, cell_xy, cz0, cz1, q, tz0, tz1)) return false;
+  if (!crossing_height_within(w2, cell_xy, cz0, cz1, q, tz0, tz1)) return false;
+  for (const auto& c : cell_xy)
+    for (const auto& p : q)
+      if (!crosses_footprint(w1, c, p) && !crosses_footprint(w2, c, p)) return false;
+  return true;
+}
+
+template <class NT>
+std::array<P2<NT>, 4> cell_corners(const NT& x0, const NT& y0, const NT& x1, const NT& y1) {
+  return {{{x0, y0}, {x1, y0}, {x0, y1}, {x1, y1}}};
+}
+
+// Exact: do the closed footprint segments of the two walls share a point?
+bool footprints_meet(const WallRectangle& w1, const WallRectangle& w2) {
+  const P2<Exact> a{Exact(w1.ax), Exact(w1.ay)}, b{Exact(w1.bx), Exact(w1.by)};
+  const P2<Exact> c{Exact(w2.ax), Exact(w2.ay)}, d{Exact(w2.bx), Exact(w2.by)};
+  const int o1 = sgn(cross(a, b, c)), o2 = sgn(cross(a, b, d)), o3 = sgn(cross(c, d, a)), o4 = sgn(cross(c, d, b));
+  if (o1 == 0 && o2 == 0) {  // collinear: the projections onto the line overlap
+    auto key = [&](const P2<Exact>& p) { return (b.x - a.x) * (p.x - a.x) + (b.y - a.y) * (p.y - a.y); };
+    const Exact k1 = key(c), k2 = key(d), len = key(b);
+    return !(std::max(k1, k2) < Exact(0) || std::min(k1, k2) > len);
+  }
+  return o1 * o2 <= 0 && o3 * o4 <= 0;
 }
 
 }  // namespace
@@ -96,6 +144,26 @@ bool wall_hides_exactly(const WallRectangle& wall, const RationalBox3& cell, con
   q.reserve(target.points.size());
   for (const auto& p : target.points) q.push_back({Exact(p.x), Exact(p.y)});
   return hides<Exact>(wall, corners, cell.lo.z, cell.hi.z, q, Exact(target.z_lo), Exact(target.z_hi));
+}
+
+bool wall_pair_may_hide(const WallRectangle& w1, const WallFromCell& p1, const WallRectangle& w2,
+                        const WallFromCell& p2, const Box3& cell, const UmbraTarget& target) {
+  if (!p1.usable || !p2.usable) return false;
+  const auto corners = cell_corners(cell.lo.x, cell.lo.y, cell.hi.x, cell.hi.y);
+  std::vector<P2<double>> q;
+  q.reserve(target.points.size());
+  for (const auto& p : target.points) q.push_back({p.x, p.y});
+  return pair_hides<double>(w1, w2, corners, cell.lo.z, cell.hi.z, q, target.z_lo, target.z_hi);
+}
+
+bool wall_pair_hides_exactly(const WallRectangle& w1, const WallRectangle& w2, const RationalBox3& cell,
+                             const UmbraTarget& target) {
+  if (!footprints_meet(w1, w2)) return false;
+  const auto corners = cell_corners(cell.lo.x, cell.lo.y, cell.hi.x, cell.hi.y);
+  std::vector<P2<Exact>> q;
+  q.reserve(target.points.size());
+  for (const auto& p : target.points) q.push_back({Exact(p.x), Exact(p.y)});
+  return pair_hides<Exact>(w1, w2, corners, cell.lo.z, cell.hi.z, q, Exact(target.z_lo), Exact(target.z_hi));
 }
 
 }  // namespace exactvis::region

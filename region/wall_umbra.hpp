@@ -43,4 +43,16 @@ bool wall_may_hide(const WallRectangle& wall, const WallFromCell& prepared, cons
 // The exact test described above. Exact rational arithmetic throughout; cost O(k) products for k points.
 bool wall_hides_exactly(const WallRectangle& wall, const RationalBox3& cell, const UmbraTarget& target);
 
+// Umbra fusion of two adjacent walls (docs/theory.md §5.10, "Two walls"): R is hidden from C by W1 ∪ W2 when
+// their closed footprint segments share a point (a building's corner, adjacent facades), the cell and every
+// Q_j lie strictly on opposite sides of each wall's line, the vertical condition holds for each wall with its
+// own lambda range, and every segment from a cell corner to a Q_j meets [a1, b1] or [a2, b2]. Then every
+// segment from C to R meets W1 or W2 at an interior point (the proof in theory §5.10), though neither wall
+// alone need hide R. Exact; cost O(k) products. wall_pair_may_hide is its double proposal (without the
+// footprint contact, which callers choose by shared endpoints).
+bool wall_pair_hides_exactly(const WallRectangle& w1, const WallRectangle& w2, const RationalBox3& cell,
+                             const UmbraTarget& target);
+bool wall_pair_may_hide(const WallRectangle& w1, const WallFromCell& p1, const WallRectangle& w2,
+                        const WallFromCell& p2, const Box3& cell_approx, const UmbraTarget& target);
+
 }  // namespace exactvis::region

@@ -4,8 +4,10 @@
 #include "kernel/rational_between.hpp"
 #include "kernel/ray_first_hit.hpp"
 #include "region/convex_polygon_3.hpp"
+#include "shadows/eee_interval_split.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <set>
 
 namespace exactvis::shadows {
@@ -59,18 +61,51 @@ int ev_order(const Scene& scene, const std::map<int, std::set<int>>& neighbours,
   return 2;
 }
 
-Exact approach(const RootNumber& from, const RootNumber& towards) {
-  // A rational strictly between `from` and `towards`, within 2^-40 of the gap from `from`.
-  RootNumber b = towards;
-  Exact q = rational_strictly_between(from < towards ? from : towards, from < towards ? towards : from);
-  for (int k = 0; k < 40; ++k) {
-    b = RootNumber(q);
-    q = rational_strictly_between(from < b ? from : b, from < b ? b : from);
-  }
-  return q;
+// A rational strictly beyond the irrational parameter `end`, away from `inside`, within 2^-40 of it: an arc
+// extended past its true end by so little is a dangling piece (it cannot close a face), while an arc
+// stopping short would leave a gap between faces.
+Exact beyond(const RootNumber& end, const RootNumber& inside) {
+  const RootNumber step(Exact(std::ldexp(1.0, -40)));
+  return inside > end ? rational_strictly_between(end - step, end) : rational_strictly_between(end, end + step);
 }
 
 }  // namespace
+
+std::optional<DiscontinuityCurve> eee_curve(const Scene& scene, const EeeEvent& event, const RootNumber& t0,
+                                            const RootNumber& t1, const Exact& inside, const ReceiverFrame& frame,
+                                            int samples) {
+  auto point_at = [&](const Exact& t) -> std::optional<Vec3<Exact>> {
+    const auto s = eee_generator_segment(scene, event, t);
+    if (!s) return std::nullopt;
+    return line_meets_plane(s->front, s->front + s->direction, frame);
+  };
+  Exact q0, q1;
+  const bool e0 = root_number_rational(t0, &q0), e1 = root_number_rational(t1, &q1);
+  if (!e0) q0 = beyond(t0, RootNumber(inside));
+  if (!e1) q1 = beyond(t1, RootNumber(inside));
+  const int n = std::max(2, samples);
+  DiscontinuityCurve c;
+  c.kind = DiscontinuityCurve::Kind::EEE;
+  c.order = 2;
+  c.edges = event.edges;
+  c.t0 = t0;
+  c.t1 = t1;
+  for (int k = 0; k <= n; ++k) {
+    const Exact t = q0 + Exact(k, n) * (q1 - q0);
+    auto x = point_at(t);
+    if (!x && (k == 0 || k == n)) {  // the extended end has no plane point: stop inside instead
+      const RootNumber& end = k == 0 ? t0 : t1;
+      x = point_at(rational_strictly_between(end < RootNumber(inside) ? end : RootNumber(inside),
+                                             end < RootNumber(inside) ? RootNumber(inside) : end));
+    }
+    if (!x) return std::nullopt;  // cannot happen inside a free interval (lines there are not singular)
+    c.points.push_back(*x);
+  }
+  c.ends_exact = e0 && e1;
+  c.ends = {to_double(c.points.front()), to_double(c.points.back())};
+  c.conic = eee_conic(scene, event.edges, frame);
+  return c;
+}
 
 std::array<Exact, 6> eee_conic(const Scene& scene, const std::array<std::array<int, 2>, 3>& edges,
                                const ReceiverFrame& frame) {
@@ -149,71 +184,52 @@ std::map<std::int64_t, std::vector<DiscontinuityCurve>> event_curves(const Scene
     int light_edge = -1;
     for (int k = 0; k < 3; ++k)
       if (lf.edges.count(e.edges[k])) light_edge = light_edge < 0 ? k : 3;  // 3: several light edges
-    if (light_edge < 0 || light_edge == 3) continue;
+    if (light_edge == 3) continue;
+    const bool bb = light_edge < 0;  // blocker-blocker (shadows/blocker_eee_events.hpp)
     for (const auto& iv : e.intervals) {
-      const auto seg = eee_generator_segment(scene, e, iv.sample_t);
-      if (!seg) continue;
-      const auto pts = eee_line_points(scene, e, RootNumber(iv.sample_t));
-      const std::optional<Vec3<RootNumber>> lp = light_edge == 0 ? std::optional(pts.on_e1)
-                                                 : light_edge == 1 ? pts.on_e2 : pts.on_e3;
-      if (!lp) continue;
-      Vec3<Exact> lq;
-      if (!root_number_rational(lp->x, &lq.x) || !root_number_rational(lp->y, &lq.y) ||
-          !root_number_rational(lp->z, &lq.z))
-        continue;
-      bool forward;
-      if (lq == seg->back) forward = true;
-      else if (lq == seg->front) forward = false;
-      else continue;  // the light's point lies between blockers' points
-      const std::int64_t rid = forward ? iv.front_object : iv.back_object;
-      const auto fr = frames.find(rid);
-      if (rid < 0 || fr == frames.end()) continue;
-      const std::int64_t rindex = scene.index_of_id(rid);
-      Exact q0, q1;
-      const bool e0 = root_number_rational(iv.t0, &q0), e1 = root_number_rational(iv.t1, &q1);
-      if (!e0) q0 = approach(iv.t0, RootNumber(iv.sample_t));
-      if (!e1) q1 = approach(iv.t1, RootNumber(iv.sample_t));
-      const int n = std::max(2, options.samples);
-      std::vector<std::optional<Vec3<Exact>>> on_r(n + 1);
-      for (int k = 0; k <= n; ++k) {
-        const Exact t = q0 + Exact(k, n) * (q1 - q0);
-        const auto s = eee_generator_segment(scene, e, t);
-        if (!s) continue;
-        const Vec3<Exact> origin = forward ? s->front : s->back;
-        const Vec3<Exact> dir = forward ? s->direction : -s->direction;
-        if (ray_first_hit(scene, index, box, origin, dir).triangle != rindex) continue;
-        on_r[k] = line_meets_plane(origin, origin + dir, fr->second);
-      }
-      const auto conic = eee_conic(scene, e.edges, fr->second);
-      for (int k = 0; k <= n;) {
-        if (!on_r[k]) {
-          ++k;
+      // Light edge: the receiver is beyond the generator point farthest from the light's point (which must be
+      // outermost); blocker-blocker: per piece, the end that is not on the light.
+      bool forward = true;
+      if (!bb) {
+        const auto seg = eee_generator_segment(scene, e, iv.sample_t);
+        if (!seg) continue;
+        const auto pts = eee_line_points(scene, e, RootNumber(iv.sample_t));
+        const std::optional<Vec3<RootNumber>> lp = light_edge == 0 ? std::optional(pts.on_e1)
+                                                   : light_edge == 1 ? pts.on_e2 : pts.on_e3;
+        if (!lp) continue;
+        Vec3<Exact> lq;
+        if (!root_number_rational(lp->x, &lq.x) || !root_number_rational(lp->y, &lq.y) ||
+            !root_number_rational(lp->z, &lq.z))
           continue;
+        if (lq == seg->back) forward = true;
+        else if (lq == seg->front) forward = false;
+        else continue;  // the light's point lies between blockers' points
+      }
+      // Exact pieces of constant end objects; runs of pieces ending on one receiver (and, blocker-blocker,
+      // on the light at the other end) become curves.
+      const std::vector<EeeEndPiece> pieces = split_eee_interval(scene, index, box, e, iv);
+      auto receiver_of = [&](const EeeEndPiece& p) -> std::int64_t {
+        std::int64_t rid = -1;
+        if (!bb) {
+          rid = forward ? p.front : p.back;
+        } else {
+          const bool fl = lf.ids.count(p.front) > 0, bl = lf.ids.count(p.back) > 0;
+          if (fl != bl) rid = fl ? p.back : p.front;
         }
-        int last = k;
-        while (last + 1 <= n && on_r[last + 1]) ++last;
-        if (last > k) {
-          DiscontinuityCurve c;
-          c.kind = DiscontinuityCurve::Kind::EEE;
-          c.order = 2;
-          c.receiver = rid;
-          c.edges = e.edges;
-          c.light_edge = light_edge;
-          c.t0 = k == 0 ? iv.t0 : RootNumber(q0 + Exact(k, n) * (q1 - q0));
-          c.t1 = last == n ? iv.t1 : RootNumber(q0 + Exact(last, n) * (q1 - q0));
-          for (int j = k; j <= last; ++j) c.points.push_back(*on_r[j]);
-          if (last == k + 1) {
-            // A third exact conic point between the two (the arc's orientation needs one): the line at the
-            // middle parameter, on the same surface; by continuity its plane point lies on the arc between.
-            const Exact tm = q0 + Exact(2 * k + 1, 2 * n) * (q1 - q0);
-            if (const auto s = eee_generator_segment(scene, e, tm))
-              if (const auto x = line_meets_plane(s->front, s->front + s->direction, fr->second))
-                c.points.insert(c.points.begin() + 1, *x);
+        return rid >= 0 && frames.count(rid) ? rid : -1;
+      };
+      for (std::size_t k = 0; k < pieces.size();) {
+        const std::int64_t rid = receiver_of(pieces[k]);
+        std::size_t last = k;
+        while (last + 1 < pieces.size() && receiver_of(pieces[last + 1]) == rid) ++last;
+        if (rid >= 0) {
+          if (auto c = eee_curve(scene, e, pieces[k].t0, pieces[last].t1, pieces[k].sample_t, frames.at(rid),
+                                 options.samples)) {
+            c->receiver = rid;
+            c->light_edge = light_edge;
+            c->blocker_blocker = bb;
+            out[rid].push_back(std::move(*c));
           }
-          c.ends_exact = k == 0 && e0 && last == n && e1;
-          c.ends = {to_double(c.points.front()), to_double(c.points.back())};
-          c.conic = conic;
-          out[rid].push_back(std::move(c));
         }
         k = last + 1;
       }

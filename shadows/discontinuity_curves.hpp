@@ -7,9 +7,12 @@
 // the same EvResult), the object at the end that is not a light triangle. EV intervals are split where these objects change, so the whole open interval ends on one
 // receiver R and its curve is the segment from L(t0) to L(t1) intersected with R's plane (exact, rational).
 // An EEE interval with a light edge whose generator point is the outermost one on one side reaches the object
-// beyond the other side; its curve is the conic where the ruled event surface meets R's plane, kept where the
-// sampled lines end on R (EEE intervals are not split at end-object changes: the kept range is located to the
-// polyline resolution, see EeeCurveOptions). D0 curves: the segment where a blocker triangle not in R's plane
+// beyond the other side; a blocker-blocker EEE interval (no light edge, shadows/blocker_eee_events.hpp, passed
+// in the same EeeResult) a light triangle at one end and the receiver at the other. EEE intervals are split
+// exactly where those objects change (shadows/eee_interval_split.hpp); each run of pieces ending on one
+// receiver R gives a curve: the conic where the ruled event surface meets R's plane, through the exact points
+// of lines at rational parameters (irrational ends: see eee_curve). D0 curves: the segment where a blocker
+// triangle not in R's plane
 // meets R (a blocker resting on or piercing the receiver).
 //
 // Orders: D0 contacts 0; EV 1 when an edge at V other than E's lies in the wedge plane (V, E) (the hidden
@@ -41,12 +44,12 @@ struct DiscontinuityCurve {
   std::array<std::array<int, 2>, 3> edges{};
   std::int64_t blocker = -1;
   bool light_vertex = false;       // EV: V is on the light (else E is, unless blocker_blocker)
-  bool blocker_blocker = false;    // EV: neither V nor E is on the light (shadows/blocker_events.hpp)
-  int light_edge = -1;             // EEE: which generator edge is on the light
+  bool blocker_blocker = false;    // no generator on the light (EV: neither V nor E; EEE: no edge)
+  int light_edge = -1;             // EEE: which generator edge is on the light (-1: blocker-blocker)
   RootNumber t0 = 0, t1 = 0;       // the event family's parameter range of the curve (not for D0)
   // Exact points on the curve in order: EV and D0 the two ends; EEE the points of lines at rational
-  // parameters (exactly on the conic), from the first end (or a rational point within 2^-40 of it when that
-  // end is irrational) to the last.
+  // parameters (exactly on the conic), from the first end (or, when that end is irrational, the point of a
+  // rational parameter beyond it by less than 2^-40) to the last.
   std::vector<Vec3<Exact>> points;
   // The ends in doubles (exact ends are points.front() and .back() unless `ends_exact` is false).
   std::array<Point3, 2> ends{};
@@ -56,7 +59,7 @@ struct DiscontinuityCurve {
 };
 
 struct EeeCurveOptions {
-  int samples = 16;  // polyline pieces per EEE interval (each sample line's end object is checked exactly)
+  int samples = 16;  // polyline pieces per EEE curve (display chords; the arrangement's arc is exact)
 };
 
 // Input: scene, index, light (indices into Scene::triangles), the light-restricted EV and EEE events of the
@@ -67,6 +70,16 @@ std::map<std::int64_t, std::vector<DiscontinuityCurve>> event_curves(const Scene
                                                                      const EvResult& ev, const EeeResult& eee,
                                                                      const std::vector<std::int64_t>& receivers,
                                                                      const EeeCurveOptions& options = {});
+
+// The EEE curve of `event` for parameters [t0, t1] (a run ending on the receiver of `frame`; `inside` a
+// rational strictly between t0 and t1) with samples + 1 exact conic points at evenly spaced rational
+// parameters. An irrational end is replaced by a rational parameter beyond it by less than 2^-40 (the arc
+// overshoots its end by a dangling piece instead of stopping short of the curve it ends on); ends_exact is
+// then false. Fields receiver, light_edge, blocker_blocker are left for the caller. std::nullopt if some
+// sample line has no point in the plane (not for lines of a free interval).
+std::optional<DiscontinuityCurve> eee_curve(const Scene& scene, const EeeEvent& event, const RootNumber& t0,
+                                            const RootNumber& t1, const Exact& inside, const ReceiverFrame& frame,
+                                            int samples);
 
 // The D0 curves of receiver `receiver` (index): blockers (not light, not in its plane) meeting it in a
 // segment of positive length, clipped to the receiver. Exact.

@@ -5,7 +5,9 @@
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Triangulation_face_base_with_info_2.h>
 
+#include <algorithm>
 #include <map>
+#include <optional>
 
 namespace exactvis::shadows {
 namespace {
@@ -15,6 +17,28 @@ using Fb0 = CGAL::Constrained_triangulation_face_base_2<PlanarKernel>;
 using Fb = CGAL::Triangulation_face_base_with_info_2<int, PlanarKernel, Fb0>;
 using Tds = CGAL::Triangulation_data_structure_2<Vb, Fb>;
 using Cdt = CGAL::Constrained_Delaunay_triangulation_2<PlanarKernel, Tds, CGAL::Exact_intersections_tag>;
+
+// The part of segment [a, b] in the closed unit triangle u >= 0, v >= 0, u + v <= 1 (Liang-Barsky, exact),
+// or std::nullopt when that part is empty or a point.
+std::optional<std::pair<std::array<Exact, 2>, std::array<Exact, 2>>> clip_to_unit_triangle(const std::array<Exact, 2>& a,
+                                                                                         const std::array<Exact, 2>& b) {
+  const std::array<Exact, 2> d{b[0] - a[0], b[1] - a[1]};
+  Exact lo = 0, hi = 1;
+  const std::array<std::pair<Exact, Exact>, 3> lin{{{a[0], d[0]}, {a[1], d[1]}, {1 - a[0] - a[1], -d[0] - d[1]}}};
+  for (const auto& [val, slope] : lin) {  // val + s * slope >= 0
+    if (CGAL::is_zero(slope)) {
+      if (val < 0) return std::nullopt;
+    } else if (slope > 0) {
+      lo = std::max(lo, -val / slope);
+    } else {
+      hi = std::min(hi, -val / slope);
+    }
+  }
+  if (!(lo < hi)) return std::nullopt;
+  if (lo == 0 && hi == 1) return std::pair{a, b};
+  return std::pair{std::array<Exact, 2>{a[0] + lo * d[0], a[1] + lo * d[1]},
+                   std::array<Exact, 2>{a[0] + hi * d[0], a[1] + hi * d[1]}};
+}
 
 }  // namespace
 
@@ -26,7 +50,9 @@ ReceiverFaces receiver_faces(const std::vector<std::vector<std::array<Exact, 2>>
   cdt.insert_constraint(c2, c0);
   for (const auto& pl : polylines)
     for (std::size_t k = 0; k + 1 < pl.size(); ++k) {
-      const PlanarPoint a = to_planar(pl[k]), b = to_planar(pl[k + 1]);
+      const auto part = clip_to_unit_triangle(pl[k], pl[k + 1]);
+      if (!part) continue;
+      const PlanarPoint a = to_planar(part->first), b = to_planar(part->second);
       if (a != b) cdt.insert_constraint(a, b);
     }
   ReceiverFaces out;

@@ -28,8 +28,9 @@ struct ReceiverFaces {
   std::vector<Face> faces;
 };
 
-// Input: the curves as polylines of exact (u, v) points inside the closed unit triangle (each polyline >= 2
-// points). Output: the triangulation and its faces. Cost: O((n + k) log n) for n constraint points and k
+// Input: the curves as polylines of exact (u, v) points (each polyline >= 2 points); pieces outside the
+// closed unit triangle are clipped away exactly (an EEE arc may overshoot the receiver's side by less than
+// its 2^-40 end resolution, see discontinuity_curves.hpp). Output: the triangulation and its faces. Cost: O((n + k) log n) for n constraint points and k
 // crossings.
 ReceiverFaces receiver_faces(const std::vector<std::vector<std::array<Exact, 2>>>& polylines);
 

@@ -3,6 +3,7 @@
 #include "events/eee_enumeration.hpp"
 #include "events/ev_events.hpp"
 #include "kernel/triangle_index.hpp"
+#include "shadows/blocker_eee_events.hpp"
 #include "shadows/blocker_events.hpp"
 #include "shadows/conic_arrangement.hpp"
 #include "shadows/point_irradiance.hpp"
@@ -48,11 +49,22 @@ ShadowResult compute_shadows(const Scene& scene, const ShadowOptions& options) {
     for (auto& e : bb.events) ev.events.push_back(std::move(e));
   }
   const auto after_ev = std::chrono::steady_clock::now();
-  const EeeResult eee = enumerate_eee_events(scene, eeo);
+  EeeResult eee = enumerate_eee_events(scene, eeo);
+  res.stats.eee_events = eee.events.size();
+  if (options.blocker_events) {
+    BlockerEvOptions bo;
+    bo.parallel = options.parallel;
+    bo.progress = options.progress;
+    const auto before_bb = std::chrono::steady_clock::now();
+    EeeResult bb = blocker_eee_events(scene, options.light, bo);
+    res.stats.seconds_blocker_eee =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - before_bb).count();
+    res.stats.blocker_eee_events = bb.events.size();
+    for (auto& e : bb.events) eee.events.push_back(std::move(e));
+  }
   const auto after_eee = std::chrono::steady_clock::now();
   res.stats.seconds_ev = std::chrono::duration<double>(after_ev - start).count();
   res.stats.seconds_eee = std::chrono::duration<double>(after_eee - after_ev).count();
-  res.stats.eee_events = eee.events.size();
   auto curves = event_curves(scene, index, options.light, ev, eee, receivers, options.eee);
   const auto mid = std::chrono::steady_clock::now();
   res.stats.seconds_events = std::chrono::duration<double>(mid - start).count();

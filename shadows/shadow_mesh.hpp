@@ -23,7 +23,8 @@ struct ShadowOptions {
   bool vertex_irradiance = true;          // backproject at every mesh vertex (for the mesh files)
   bool progress = false;
   bool parallel = true;                   // oneTBB over receivers
-  bool blocker_events = true;             // include blocker-blocker EV events (shadows/blocker_events.hpp)
+  // Include blocker-blocker EV and EEE events (shadows/blocker_events.hpp, shadows/blocker_eee_events.hpp).
+  bool blocker_events = true;
   EeeCurveOptions eee;
 };
 
@@ -63,6 +64,7 @@ struct ReceiverShadows {
 struct ShadowStats {
   std::uint64_t ev_events = 0, eee_events = 0;
   std::uint64_t blocker_ev_events = 0;    // blocker-blocker EV events with a kept interval
+  std::uint64_t blocker_eee_events = 0;   // blocker-blocker EEE events (with a free interval)
   std::uint64_t backprojections = 0;
   std::uint64_t conic_arcs = 0, chord_curves = 0;    // over all receivers
   std::uint64_t arrangement_failures = 0;            // receivers whose conic arrangement failed
@@ -70,8 +72,8 @@ struct ShadowStats {
   // certified sample (conic_arrangement.hpp).
   std::uint64_t trimmed_arcs = 0, uncertified_samples = 0;
   double seconds_events = 0, seconds_receivers = 0;  // events: EV (light and blocker-blocker) + EEE + curves
-  double seconds_ev = 0, seconds_eee = 0;  // seconds_ev includes seconds_blocker_ev
-  double seconds_blocker_ev = 0;
+  double seconds_ev = 0, seconds_eee = 0;  // seconds_ev includes seconds_blocker_ev, seconds_eee _blocker_eee
+  double seconds_blocker_ev = 0, seconds_blocker_eee = 0;
 };
 
 struct ShadowResult {

@@ -342,6 +342,26 @@ inline TunnelsMap tunnels_map(F visible) {
 }
 inline TunnelsMap tunnels_map() { return tunnels_map(TunnelsMap::exact); }
 
+// Adds the box brush [lo, hi] (six axis-aligned sides, outward normals) with `shader` to the world model
+// (model 0): inserted after model 0's last brush, the later models' brush ranges shifted. Returns its index.
+inline int add_world_box_brush(Bsp& b, std::array<float, 3> lo, std::array<float, 3> hi, int shader) {
+  const int first = static_cast<int>(b.sides.size());
+  b.sides.push_back({b.add_plane(-1, 0, 0, -lo[0]), shader});
+  b.sides.push_back({b.add_plane(1, 0, 0, hi[0]), shader});
+  b.sides.push_back({b.add_plane(0, -1, 0, -lo[1]), shader});
+  b.sides.push_back({b.add_plane(0, 1, 0, hi[1]), shader});
+  b.sides.push_back({b.add_plane(0, 0, -1, -lo[2]), shader});
+  b.sides.push_back({b.add_plane(0, 0, 1, hi[2]), shader});
+  const int at = b.models[0].first_brush + b.models[0].n_brushes;
+  b.brushes.insert(b.brushes.begin() + at, Brush{first, 6, shader});
+  ++b.models[0].n_brushes;
+  for (std::size_t m = 1; m < b.models.size(); ++m)
+    if (b.models[m].first_brush >= at) ++b.models[m].first_brush;
+  for (auto& i : b.leaf_brushes)
+    if (i >= at) ++i;
+  return at;
+}
+
 // ---- Independent exact point location (oracle): descend the writer's own tree with GMP rationals. ----
 // Returns the leaf, or nullopt when x lies exactly on a plane met on the way (the tests skip such points).
 inline std::optional<int> oracle_leaf_of(const Bsp& b, const std::array<mpq_class, 3>& x) {

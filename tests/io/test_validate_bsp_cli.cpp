@@ -87,7 +87,6 @@ TEST(ValidateBspCli, BadMapsAndOptions) {
       {"--bsp " + good + " --clusters 0", "--clusters: give at least two different clusters"},
       {"--bsp " + good + " --pairs 3 --clusters 0,1", "--pairs: give either --pairs or --clusters"},
       {"--bsp " + good + " --occluders walls", "--occluders: 'walls' is not leaves or brushes"},
-      {"--bsp " + good + " --occluders brushes", "--occluders brushes: exact cluster visibility is implemented for leaves only"},
       {"--pairs 3", "--pairs, --clusters, --occluders and --obj need --bsp MAP"},
   };
   for (const auto& c : cases) {
@@ -97,4 +96,36 @@ TEST(ValidateBspCli, BadMapsAndOptions) {
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
     EXPECT_FALSE(fs::exists(dir.file("out.json"))) << c.args;
   }
+}
+
+TEST(ValidateBspCli, BrushesJsonOnADetailDoorway) {
+  // The doorway map with its lintel made solid and a detail brush (solid bit only, as in real maps) filling
+  // the doorway: with brushes only rooms B front and back see each other; the visdata marks every pair but
+  // (0, 3), (3, 0), (1, 0) visible: 7 false visible, no false invisible. Leaves see through the doorway.
+  bsptest::Bsp b = bsptest::doorway_map().bsp;
+  b.shaders.push_back({"textures/base/lintel", 0, 1});
+  b.brushes[2].shader = static_cast<int>(b.shaders.size()) - 1;
+  const int detail = bsptest::add_world_box_brush(b, {120, 48, 0}, {136, 80, 96}, 2);
+  iotest::TempDir dir;
+  const std::string map = iotest::write_file(dir.file("detail.bsp"), b.bytes());
+  const auto r = cli_test::run_exactvis(dir.path, "validate --bsp " + map + " --clusters 0,1,2,3 --occluders brushes --json -q --obj " +
+                                                      dir.file("brushes.obj"));
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["occluders"], "brushes");
+  ASSERT_EQ(j["pairs"].size(), 12u);
+  for (const auto& p : j["pairs"]) {
+    const int from = p["from"], to = p["to"];
+    EXPECT_EQ(p["exact"], (from == 1 && to == 3) || (from == 3 && to == 1)) << from << " " << to;
+    EXPECT_EQ(p["witness"].is_null(), !p["exact"].get<bool>());
+  }
+  EXPECT_EQ(j["totals"], nlohmann::json::parse(R"({"pairs": 12, "false_invisible": 0, "false_visible": 7})"));
+  const std::string obj = iotest::read_file(dir.file("brushes.obj"));
+  EXPECT_NE(obj.find("g brush_" + std::to_string(detail)), std::string::npos);
+  EXPECT_EQ(obj.find("g leaf_"), std::string::npos);
+  EXPECT_NE(obj.find("g brush_2\n"), std::string::npos);                          // the lintel, now solid
+  EXPECT_EQ(obj.find("g brush_" + std::to_string(detail + 1)), std::string::npos);  // model 1's door
+  const auto leaves = cli_test::run_exactvis(dir.path, "validate --bsp " + map + " --clusters 0,1 --json -q");
+  ASSERT_EQ(leaves.status, 0) << leaves.err;
+  EXPECT_EQ(nlohmann::json::parse(leaves.out)["pairs"][0]["exact"], true);
 }

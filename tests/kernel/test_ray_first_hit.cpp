@@ -49,7 +49,10 @@ OracleHit brute_first_hit(const Scene& scene, const QVec& o, const QVec& d) {
 
 Vec3<Exact> exact(const Point3& p) { return {Exact(p.x), Exact(p.y), Exact(p.z)}; }
 
-void check_scene(const std::string& kind, std::int64_t n, std::uint64_t seed, int rays, int* hits, int* coplanar) {
+// dir_scale multiplies every direction (a tiny scale makes the direction's double enclosures contain 0, so
+// ray_first_hit takes its exact cover instead of the interval one).
+void check_scene(const std::string& kind, std::int64_t n, std::uint64_t seed, int rays, int* hits, int* coplanar,
+                 const Exact& dir_scale = Exact(1)) {
   const Scene scene = generate_scene(kind, n, seed);
   const TriangleIndex index(scene);
   const Box3 box = bounding_box(scene);
@@ -85,6 +88,7 @@ void check_scene(const std::string& kind, std::int64_t n, std::uint64_t seed, in
       }
     }
     if (d.x == 0 && d.y == 0 && d.z == 0) continue;
+    d = dir_scale * d;
     const RayHit got = ray_first_hit(scene, index, box, o, d);
     const OracleHit want = brute_first_hit(scene, q(o), q(d));
     ASSERT_EQ(got.triangle, want.triangle) << kind << " seed " << seed << " ray " << i;
@@ -101,6 +105,32 @@ TEST(RayFirstHit, MatchesBruteForceOnGeneratedScenes) {
     for (std::uint64_t seed = 1; seed <= 2; ++seed) check_scene(kind, 100, seed, 150, &hits, &coplanar);
   EXPECT_GT(hits, 400);
   EXPECT_GT(coplanar, 50);  // rays along a triangle's plane that hit something
+}
+
+TEST(RayFirstHit, TinyDirectionsTakeTheExactCoverAndAgree) {
+  Exact tiny(1);
+  for (int i = 0; i < 1100; ++i) tiny /= 2;  // 2^-1100: below the smallest double
+  int hits = 0, coplanar = 0;
+  check_scene("town", 60, 3, 60, &hits, &coplanar, tiny);
+  EXPECT_GT(hits, 10);
+}
+
+TEST(RayFirstHit, RayLeavingTheBoxAtOnceHitsNothing) {
+  // A triangle on the top face of the scene box (z = 1) and a ray from that face going up: the open ray is
+  // outside the box at once. The same ray going down hits the bottom triangle.
+  Scene s;
+  s.vertices = {{0, 0, 0}, {4, 0, 0}, {0, 4, 0}, {0, 0, 1}, {4, 0, 1}, {0, 4, 1}};
+  s.objects.push_back({"o"});
+  s.triangles.push_back({0, {0, 1, 2}, 0});
+  s.triangles.push_back({1, {3, 4, 5}, 0});
+  const TriangleIndex index(s);
+  const Box3 box = bounding_box(s);
+  const Vec3<Exact> o(Exact(1), Exact(1), Exact(1));
+  EXPECT_EQ(ray_first_hit(s, index, box, o, Vec3<Exact>(Exact(1, 3), Exact(0), Exact(1))).triangle, -1);
+  EXPECT_EQ(ray_first_hit(s, index, box, o, Vec3<Exact>(Exact(1, 3), Exact(0), Exact(-1))).triangle, 0);
+  EXPECT_EQ(ray_first_hit(s, index, box, Vec3<Exact>(Exact(1), Exact(1), Exact(1, 2)), Vec3<Exact>(Exact(0), Exact(0), Exact(1)))
+                .triangle,
+            1);
 }
 
 TEST(RayFirstHit, DecisionsAreCountedAndUnchangedWithoutFilters) {

@@ -230,3 +230,84 @@ TEST(ConvexPolyhedron3, IntersectHalfspacesAndLocate) {
   EXPECT_GT(boundary, 50);
   EXPECT_GT(outside, 50);
 }
+
+// polygon_outside against point classification by the oracle: random solids (a box clipped by random planes)
+// and random convex polygons in planes z = c, c often a plane of the solid's box (the polygon then lies in
+// a face's plane, partly on the solid's boundary). At random rational points of the polygon: a point in the
+// closed solid lies in no piece's relative interior; a point strictly outside lies in some closed piece; no
+// point lies in two pieces' relative interiors. Every piece's centroid is strictly outside the solid.
+TEST(ConvexPolyhedron3, PolygonOutsideAgainstOracle) {
+  std::mt19937_64 rng(29);
+  auto small = [&](int r) { return Exact(static_cast<long>(rng() % (2 * r + 1)) - r); };
+  // In a piece in the plane z = c (x, y orientation): +1 relint, 0 on its boundary, -1 outside.
+  auto where_in = [](const Polygon3& piece, const oracle::QVec& x) {
+    int turn = 0, worst = 1;
+    for (std::size_t i = 0; i < piece.size() && turn == 0; ++i) {
+      const oracle::QVec a = qv(piece[i]), b = qv(piece[(i + 1) % piece.size()]), c = qv(piece[(i + 2) % piece.size()]);
+      turn = oracle::sign((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x));
+    }
+    for (std::size_t i = 0; i < piece.size(); ++i) {
+      const oracle::QVec a = qv(piece[i]), b = qv(piece[(i + 1) % piece.size()]);
+      worst = std::min(worst, turn * oracle::sign((b.x - a.x) * (x.y - a.y) - (b.y - a.y) * (x.x - a.x)));
+    }
+    return worst;
+  };
+  int inside = 0, outside = 0, coplanar = 0, split = 0;
+  for (int trial = 0; trial < 300; ++trial) {
+    const RationalPoint3 lo{small(2) - 2, small(2) - 2, small(2) - 2}, hi{small(2) + 2, small(2) + 2, small(2) + 2};
+    std::vector<Plane3> planes;
+    for (int i = 0; i < static_cast<int>(rng() % 3); ++i) {
+      const Plane3 pl{{small(2), small(2), small(2)}, small(2)};
+      if (!(pl.normal == Vec3<Exact>(Exact(0), Exact(0), Exact(0)))) planes.push_back(pl);
+    }
+    const ConvexPolyhedron3 solid = intersect_halfspaces(lo, hi, planes);
+    if (solid.empty()) continue;
+    std::vector<oracle::QHalfspace> h = box_halfspaces(lo, hi);
+    for (const auto& pl : planes) h.push_back(qh(pl));
+    const Exact c = rng() % 2 ? (rng() % 2 ? lo.z : hi.z) : Exact(static_cast<int>(rng() % 17) - 8, 2);
+    coplanar += c == lo.z || c == hi.z;
+    // A convex polygon: a square clipped by a random line of the plane.
+    Polygon3 poly{{small(3) - 1, small(3) - 1, c}, {}, {}, {}};
+    const Exact side = Exact(1 + static_cast<int>(rng() % 6));
+    poly[1] = {poly[0].x + side, poly[0].y, c};
+    poly[2] = {poly[0].x + side, poly[0].y + side, c};
+    poly[3] = {poly[0].x, poly[0].y + side, c};
+    if (rng() % 2) {
+      const Polygon3 cut = clip_polygon(poly, Plane3{{small(2), small(2), Exact(0)}, poly[0].x + poly[0].y + side / 2});
+      if (!is_degenerate(cut)) poly = cut;
+    }
+    const std::vector<Polygon3> pieces = polygon_outside(poly, solid);
+    split += pieces.size() > 1;
+    for (const auto& piece : pieces) {
+      ASSERT_FALSE(is_degenerate(piece));
+      const oracle::QVec g = qv(centroid(piece));
+      int worst = 1;
+      for (const auto& hs : h) worst = std::min(worst, oracle::sign(oracle::dot(hs.n, g) - hs.d));
+      EXPECT_LT(worst, 0) << "a piece's centroid in the closed solid";
+      for (const auto& v : piece) EXPECT_EQ(v.z, c);
+    }
+    for (int s = 0; s < 40; ++s) {
+      const RationalPoint3 x = random_interior_point(poly, rng);
+      int worst = 1;
+      for (const auto& hs : h) worst = std::min(worst, oracle::sign(oracle::dot(hs.n, qv(x)) - hs.d));
+      int relint = 0, closed = 0;
+      for (const auto& piece : pieces) {
+        const int w = where_in(piece, qv(x));
+        relint += w > 0;
+        closed += w >= 0;
+      }
+      EXPECT_LE(relint, 1);
+      if (worst >= 0) {
+        EXPECT_EQ(relint, 0) << "a point of the closed solid inside a piece";
+        ++inside;
+      } else {
+        EXPECT_GE(closed, 1) << "a point outside the solid in no piece";
+        ++outside;
+      }
+    }
+  }
+  EXPECT_GT(inside, 300);
+  EXPECT_GT(outside, 300);
+  EXPECT_GT(coplanar, 30);
+  EXPECT_GT(split, 30);
+}

@@ -4,6 +4,11 @@
 #include "region/wall_umbra.hpp"
 
 #include <gtest/gtest.h>
+#include <gmpxx.h>
+
+#include <array>
+#include <cmath>
+#include <random>
 
 using namespace exactvis;
 using namespace exactvis::region;
@@ -76,4 +81,86 @@ TEST(WallUmbra, ExactBoundaryOfTheTopView) {
   // Diagonal wall: the answer does not depend on which end is a.
   const WallRectangle d{3, -10, 7, 10, 0, 10};
   EXPECT_TRUE(wall_hides_exactly(d, kCell, square_at(9, 0, 0.5, 0, 1)));
+}
+
+// ---- Umbra fusion of two adjacent walls (wall_pair_hides_exactly). ----
+namespace {
+
+// A building [5, 9] x [0, 4] seen from the cell [0, 1] x [-3, -2] across its corner (5, 0): its front wall
+// x = 5 and its side wall y = 0, both z in [0, 10].
+const RationalBox3 kCornerCell = exact_box({{0, -3, 0}, {1, -2, 1}});
+const Box3 kCornerCellD{{0, -3, 0}, {1, -2, 1}};
+const WallRectangle kFront{5, 0, 5, 4, 0, 10}, kSide{5, 0, 9, 0, 0, 10};
+
+// Independent check with GMP rationals: does the segment p q cross the wall's vertical plane strictly
+// between its ends at a point of the closed rectangle?
+bool segment_meets_wall(const std::array<mpq_class, 3>& p, const std::array<mpq_class, 3>& q, const WallRectangle& w) {
+  const mpq_class ax(w.ax), ay(w.ay), bx(w.bx), by(w.by);
+  auto f = [&](const std::array<mpq_class, 3>& x) -> mpq_class { return (bx - ax) * (x[1] - ay) - (by - ay) * (x[0] - ax); };
+  const mpq_class fp = f(p), fq = f(q);
+  if (!((fp > 0 && fq < 0) || (fp < 0 && fq > 0))) return false;
+  const mpq_class t = fp / (fp - fq);
+  const mpq_class x = p[0] + t * (q[0] - p[0]), y = p[1] + t * (q[1] - p[1]), z = p[2] + t * (q[2] - p[2]);
+  const mpq_class s = (x - ax) * (bx - ax) + (y - ay) * (by - ay), len = (bx - ax) * (bx - ax) + (by - ay) * (by - ay);
+  return s >= 0 && s <= len && z >= mpq_class(w.z_lo) && z <= mpq_class(w.z_hi);
+}
+
+}  // namespace
+
+TEST(WallUmbra, TwoWallsAtACornerHideWhatNeitherHides) {
+  // Target around (12, 6): some segments from the cell cross the front wall, others the side wall.
+  const UmbraTarget t = square_at(12, 6, 0.5, 0, 1);
+  EXPECT_FALSE(wall_hides_exactly(kFront, kCornerCell, t));
+  EXPECT_FALSE(wall_hides_exactly(kSide, kCornerCell, t));
+  EXPECT_TRUE(wall_pair_hides_exactly(kFront, kSide, kCornerCell, t));
+  EXPECT_TRUE(wall_pair_hides_exactly(kSide, kFront, kCornerCell, t));
+  EXPECT_TRUE(wall_pair_may_hide(kFront, prepare_wall(kFront, kCornerCellD), kSide, prepare_wall(kSide, kCornerCellD),
+                                 kCornerCellD, t));
+  // Walls that do not touch (a gap 5 < x < 5.5 on y = 0 where lines pass): no proof.
+  const WallRectangle apart{5.5, 0, 9, 0, 0, 10};
+  EXPECT_FALSE(wall_pair_hides_exactly(kFront, apart, kCornerCell, t));
+  // A side wall too low for the segments that cross it: no proof.
+  const WallRectangle low{5, 0, 9, 0, 0, 0.3};
+  EXPECT_FALSE(wall_pair_hides_exactly(kFront, low, kCornerCell, t));
+  // A target beside the building's far end (segments pass beyond x = 9 on y = 0): no proof.
+  EXPECT_FALSE(wall_pair_hides_exactly(kFront, kSide, kCornerCell, square_at(14, 1, 0.5, 0, 1)));
+}
+
+TEST(WallUmbra, TwoWallProofsSurviveRandomSegments) {
+  // Random corners (two walls sharing an endpoint), cells and targets; every proof is attacked with random
+  // segments from the cell to the target region (exact rationals), each of which must meet one of the walls.
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> u(0, 1);
+  int proofs = 0, single = 0;
+  for (int trial = 0; trial < 4000 && proofs < 60; ++trial) {
+    const double mx = 4 + 4 * u(rng), my = 4 * u(rng) - 2;
+    const double a1 = 2 * M_PI * u(rng), a2 = 2 * M_PI * u(rng), l1 = 1 + 5 * u(rng), l2 = 1 + 5 * u(rng);
+    const WallRectangle w1{mx, my, std::round(mx + l1 * std::cos(a1)), std::round(my + l1 * std::sin(a1)), 0, 1 + 3 * u(rng)};
+    const WallRectangle w2{mx, my, std::round(mx + l2 * std::cos(a2)), std::round(my + l2 * std::sin(a2)), 0, 1 + 3 * u(rng)};
+    const double cx = 2 * u(rng) - 1, cy = 2 * u(rng) - 1;
+    const RationalBox3 cell = exact_box({{cx, cy, 0}, {cx + 1, cy + 1, 1 + u(rng)}});
+    const UmbraTarget t = square_at(mx + 10 * u(rng) - 2, my + 10 * u(rng) - 5, 0.5 * u(rng), 0, 3 * u(rng));
+    if (!wall_pair_hides_exactly(w1, w2, cell, t)) continue;
+    ++proofs;
+    single += wall_hides_exactly(w1, cell, t) || wall_hides_exactly(w2, cell, t);
+    for (int s = 0; s < 200; ++s) {
+      std::array<mpq_class, 3> p, q;
+      for (int k = 0; k < 3; ++k) p[k] = mpq_class(cell.lo[k].mpq()) + mpq_class(u(rng)) * mpq_class((cell.hi[k] - cell.lo[k]).mpq());
+      // A random convex combination of the target's points, a random height in its range.
+      double w[4], total = 0;
+      for (double& x : w) total += (x = u(rng));
+      q = {0, 0, mpq_class(t.z_lo) + mpq_class(u(rng)) * (mpq_class(t.z_hi) - mpq_class(t.z_lo))};
+      for (int j = 0; j < 4; ++j) {
+        q[0] += mpq_class(w[j] / total) * mpq_class(t.points[j].x);
+        q[1] += mpq_class(w[j] / total) * mpq_class(t.points[j].y);
+      }
+      // (w[j] / total rounded: the weights still sum to about 1; pull q into the hull by renormalising.)
+      mpq_class sum = 0;
+      for (int j = 0; j < 4; ++j) sum += mpq_class(w[j] / total);
+      q[0] /= sum, q[1] /= sum;
+      ASSERT_TRUE(segment_meets_wall(p, q, w1) || segment_meets_wall(p, q, w2)) << "trial " << trial;
+    }
+  }
+  EXPECT_GE(proofs, 30);
+  EXPECT_LT(single, proofs) << "every proof was a one-wall proof: fusion untested";
 }

@@ -1,0 +1,171 @@
+#include "region/single_occluder_culling.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <optional>
+
+namespace exactvis::region {
+namespace {
+
+UmbraTarget box_target(const Box3& b) {
+  return {{Point3{b.lo.x, b.lo.y, 0}, Point3{b.hi.x, b.lo.y, 0}, Point3{b.lo.x, b.hi.y, 0}, Point3{b.hi.x, b.hi.y, 0}},
+          b.lo.z, b.hi.z};
+}
+
+UmbraTarget triangle_target(const Scene& scene, const SceneTriangle& t) {
+  UmbraTarget u;
+  u.z_lo = u.z_hi = scene.corner(t, 0).z;
+  for (int k = 0; k < 3; ++k) {
+    u.points.push_back(scene.corner(t, k));
+    u.z_lo = std::min(u.z_lo, scene.corner(t, k).z);
+    u.z_hi = std::max(u.z_hi, scene.corner(t, k).z);
+  }
+  return u;
+}
+
+// Exact: the closed box b and the solid's bounding box are strictly apart on some axis (so b misses the
+// closed solid).
+bool strictly_apart(const RationalBox3& b, const ConvexSolid& solid) {
+  for (int k = 0; k < 3; ++k)
+    if (b.hi[k] < Exact(solid.box.lo[k]) || b.lo[k] > Exact(solid.box.hi[k])) return true;
+  return false;
+}
+
+// Doubles, a proposal only: does the segment between the two points pass through the box (slab test)?
+bool segment_near_box(const Point3& p, const Point3& q, const Box3& box) {
+  double t0 = 0, t1 = 1;
+  for (int k = 0; k < 3; ++k) {
+    const double d = q[k] - p[k];
+    if (d == 0) {
+      if (p[k] < box.lo[k] || p[k] > box.hi[k]) return false;
+      continue;
+    }
+    double a = (box.lo[k] - p[k]) / d, b = (box.hi[k] - p[k]) / d;
+    if (a > b) std::swap(a, b);
+    t0 = std::max(t0, a);
+    t1 = std::min(t1, b);
+    if (t0 > t1) return false;
+  }
+  return true;
+}
+
+Point3 centre(const Box3& b) { return {0.5 * (b.lo.x + b.hi.x), 0.5 * (b.lo.y + b.hi.y), 0.5 * (b.lo.z + b.hi.z)}; }
+
+}  // namespace
+
+SingleOccluderCulling::SingleOccluderCulling(const PvsContext& context, const RationalBox3& cell)
+    : context_(context), cell_(cell), approx_(approximate_box(cell)) {
+  const std::vector<WallRectangle>& walls = context.extruded().walls;
+  // The walls that can hide anything from this cell (cell strictly on one side, spanning its heights),
+  // nearest first: a near wall has the widest umbra.
+  prepared_.resize(walls.size());
+  for (std::size_t w = 0; w < walls.size(); ++w) {
+    prepared_[w] = prepare_wall(walls[w], approx_);
+    if (prepared_[w].usable) usable_walls_.push_back(w);
+  }
+  const double cx = 0.5 * (approx_.lo.x + approx_.hi.x), cy = 0.5 * (approx_.lo.y + approx_.hi.y);
+  std::vector<double> distance(walls.size(), 0);
+  for (const std::size_t w : usable_walls_) {
+    const WallRectangle& r = walls[w];
+    // Distance from the cell's centre to the wall's segment (ordering only).
+    const double dx = r.bx - r.ax, dy = r.by - r.ay, len2 = dx * dx + dy * dy;
+    const double s = len2 > 0 ? std::clamp(((cx - r.ax) * dx + (cy - r.ay) * dy) / len2, 0.0, 1.0) : 0.0;
+    distance[w] = std::hypot(cx - (r.ax + s * dx), cy - (r.ay + s * dy));
+  }
+  std::stable_sort(usable_walls_.begin(), usable_walls_.end(),
+                   [&](std::size_t a, std::size_t b) { return distance[a] < distance[b]; });
+
+  // Pairs of usable walls whose footprints share an endpoint and that do not lie on one line (building
+  // corners, adjacent facades): umbra fusion of two walls (wall_pair_hides_exactly), tried after every single
+  // wall fails; nearest first. Collinear neighbours are skipped: merged runs cover them.
+  {
+    std::map<std::pair<double, double>, std::vector<std::size_t>> at_end;
+    for (const std::size_t w : usable_walls_) {
+      at_end[{walls[w].ax, walls[w].ay}].push_back(w);
+      at_end[{walls[w].bx, walls[w].by}].push_back(w);
+    }
+    for (const auto& [end, list] : at_end)
+      for (std::size_t i = 0; i < list.size(); ++i)
+        for (std::size_t j = i + 1; j < list.size(); ++j) {
+          const WallRectangle &u = walls[list[i]], &v = walls[list[j]];
+          if ((u.bx - u.ax) * (v.by - v.ay) - (u.by - u.ay) * (v.bx - v.ax) == 0) continue;  // a proposal only
+          corner_pairs_.push_back({list[i], list[j]});
+        }
+    std::stable_sort(corner_pairs_.begin(), corner_pairs_.end(), [&](const auto& x, const auto& y) {
+      return std::min(distance[x.first], distance[x.second]) < std::min(distance[y.first], distance[y.second]);
+    });
+  }
+
+  // The closed convex solids strictly apart from the cell, nearest first. solid_blocks_box_pair itself proves
+  // both boxes disjoint from the closed solid (so the segment meets the surface inside, never only at its end
+  // on the target); strictly_apart is a cheaper pre-test of the same kind that skips solids which cannot
+  // qualify before its 64 segment tests.
+  const std::vector<ConvexSolid>& solids = context.solids();
+  for (std::size_t k = 0; k < solids.size(); ++k)
+    if (strictly_apart(cell, solids[k])) usable_solids_.push_back(k);
+  const Point3 cell_centre = centre(approx_);
+  auto box_distance = [&](std::size_t k) {
+    const Point3 c = centre(solids[k].box);
+    return std::hypot(c.x - cell_centre.x, c.y - cell_centre.y, c.z - cell_centre.z);
+  };
+  std::stable_sort(usable_solids_.begin(), usable_solids_.end(),
+                   [&](std::size_t a, std::size_t b) { return box_distance(a) < box_distance(b); });
+}
+
+template <class Owns>
+bool SingleOccluderCulling::hides(const UmbraTarget& target, const Box3& target_box, const Owns& owns_triangle_of,
+                                  std::ptrdiff_t& hint) const {
+  const std::vector<WallRectangle>& walls = context_.extruded().walls;
+  auto attempt = [&](std::size_t w) {
+    if (!wall_may_hide(walls[w], prepared_[w], approx_, target)) return false;
+    exact_tests_.fetch_add(1, std::memory_order_relaxed);
+    return wall_hides_exactly(walls[w], cell_, target);
+  };
+  if (hint >= 0 && attempt(static_cast<std::size_t>(hint))) return true;
+  for (const std::size_t w : usable_walls_)
+    if (static_cast<std::ptrdiff_t>(w) != hint && attempt(w)) {
+      hint = static_cast<std::ptrdiff_t>(w);
+      return true;
+    }
+  for (const auto& [w, u] : corner_pairs_) {
+    if (!wall_pair_may_hide(walls[w], prepared_[w], walls[u], prepared_[u], approx_, target)) continue;
+    exact_tests_.fetch_add(1, std::memory_order_relaxed);
+    if (wall_pair_hides_exactly(walls[w], walls[u], cell_, target)) return true;
+  }
+  if (usable_solids_.empty()) return false;
+  const std::vector<ConvexSolid>& solids = context_.solids();
+  const Point3 cell_centre = centre(approx_), target_centre = centre(target_box);
+  std::optional<RationalBox3> exact_target;
+  for (const std::size_t k : usable_solids_) {
+    const ConvexSolid& solid = solids[k];
+    if (!segment_near_box(cell_centre, target_centre, solid.box)) continue;
+    if (!exact_target) exact_target = exact_box(target_box);
+    if (!strictly_apart(*exact_target, solid) || owns_triangle_of(solid)) continue;
+    exact_tests_.fetch_add(1, std::memory_order_relaxed);
+    if (solid_blocks_box_pair(solid, cell_, *exact_target)) return true;
+  }
+  return false;
+}
+
+bool SingleOccluderCulling::hides_triangle(std::int64_t triangle, std::ptrdiff_t& hint) const {
+  const Scene& scene = context_.scene();
+  const SceneTriangle& t = scene.triangles[static_cast<std::size_t>(triangle)];
+  auto owns = [&](const ConvexSolid& solid) {
+    return std::binary_search(solid.triangles.begin(), solid.triangles.end(), triangle);
+  };
+  return hides(triangle_target(scene, t), triangle_box(scene, t), owns, hint);
+}
+
+bool SingleOccluderCulling::hides_node(const BvhNode& node, std::ptrdiff_t& hint) const {
+  const TriangleBvh& bvh = context_.bvh();
+  auto owns = [&](const ConvexSolid& solid) {
+    return std::any_of(solid.triangles.begin(), solid.triangles.end(), [&](std::int64_t t) {
+      const int pos = bvh.position[static_cast<std::size_t>(t)];
+      return pos >= node.begin && pos < node.end;
+    });
+  };
+  return hides(box_target(node.box), node.box, owns, hint);
+}
+
+}  // namespace exactvis::region
