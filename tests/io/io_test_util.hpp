@@ -5,7 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -22,6 +24,18 @@ inline std::string write_file(const std::string& path, const std::string& conten
 }
 
 inline std::string read_file(const std::string& path) { return cli_test::slurp(path); }
+
+// Little-endian (this machine's order) float and 32-bit unsigned appended to `s`, for hand-made binary files.
+inline void put_f32(std::string& s, float v) {
+  char b[4];
+  std::memcpy(b, &v, 4);
+  s.append(b, 4);
+}
+inline void put_u32(std::string& s, std::uint32_t v) {
+  char b[4];
+  std::memcpy(b, &v, 4);
+  s.append(b, 4);
+}
 
 // Number of entries in a directory (to check that failed writes leave nothing, not even temp files).
 inline int entries(const std::filesystem::path& dir) {

@@ -35,16 +35,8 @@ std::string expect_input_error(const std::vector<std::string>& paths, const std:
 }
 std::string expect_input_error(const std::string& path) { return expect_input_error(std::vector<std::string>{path}, path); }
 
-void put_f32(std::string& s, float v) {
-  char b[4];
-  std::memcpy(b, &v, 4);
-  s.append(b, 4);
-}
-void put_u32(std::string& s, std::uint32_t v) {
-  char b[4];
-  std::memcpy(b, &v, 4);
-  s.append(b, 4);
-}
+using iotest::put_f32;
+using iotest::put_u32;
 
 const char* kCubeObj =
     "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"

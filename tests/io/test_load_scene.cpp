@@ -38,17 +38,8 @@ std::vector<std::string> object_names_per_triangle(const Scene& s) {
   return out;
 }
 
-// Binary little-endian float writer for hand-made binary files.
-void put_f32(std::string& s, float v) {
-  char b[4];
-  std::memcpy(b, &v, 4);
-  s.append(b, 4);
-}
-void put_u32(std::string& s, std::uint32_t v) {
-  char b[4];
-  std::memcpy(b, &v, 4);
-  s.append(b, 4);
-}
+using iotest::put_f32;
+using iotest::put_u32;
 
 }  // namespace
 

@@ -1,11 +1,14 @@
 #pragma once
 // Deterministic random and adversarial inputs for the kernel property tests, and conversions to the
 // independent oracle's types (tests/oracles/rational_geometry.hpp).
+#include "kernel/line_through_point_meeting_two_lines.hpp"
 #include "kernel/plucker_line.hpp"
 #include "kernel/predicates.hpp"
 #include "oracles/rational_geometry.hpp"
 
+#include <array>
 #include <cmath>
+#include <optional>
 #include <random>
 #include <vector>
 
@@ -111,5 +114,20 @@ struct PointGenerator {
     return p;
   }
 };
+
+// N exact lines, each through the generator's next two points; std::nullopt when a pair coincides (the
+// caller skips the case; the points are drawn either way, so later cases stay the same).
+template <std::size_t N>
+std::optional<std::array<PluckerLine<Exact>, N>> next_lines(PointGenerator& gen) {
+  std::array<PluckerLine<Exact>, N> lines;
+  bool ok = true;
+  for (auto& l : lines) {
+    const Point3 p = gen.next(), q = gen.next();
+    ok &= !(p == q);
+    l = exact_line_through(p, q);
+  }
+  if (!ok) return std::nullopt;
+  return lines;
+}
 
 }  // namespace exactvis::test

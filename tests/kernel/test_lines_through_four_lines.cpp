@@ -194,14 +194,9 @@ TEST(LinesThroughFourLines, RandomAndAdversarialQuadruples) {
   for (int i = 0; i < 3000; ++i) {
     gen.start_case();
     gen.degenerate_probability = (i % 3 == 0) ? 0.0 : 0.5;
-    Lines4 in;
-    bool ok = true;
-    for (auto& l : in) {
-      const Point3 p = gen.next(), q = gen.next();
-      ok &= !(p == q);
-      l = exact_line_through(p, q);
-    }
-    if (!ok) continue;
+    const std::optional<Lines4> drawn = test::next_lines<4>(gen);
+    if (!drawn) continue;
+    const Lines4& in = *drawn;
     const std::string where = std::string(test::family_name(gen.family)) + " case " + std::to_string(i);
     const auto r = lines_through_four_lines(in);
     const int expected = oracle::count_transversals_via_quadric(to_oracle(in));

@@ -41,14 +41,9 @@ TEST(RootLineQueries, MatchOracleOnTransversals) {
   for (int i = 0; i < 1500; ++i) {
     gen.start_case();
     gen.degenerate_probability = (i % 2 == 0) ? 0.0 : 0.5;
-    std::array<PluckerLine<Exact>, 5> in;  // four inputs and one probe line
-    bool ok = true;
-    for (auto& l : in) {
-      const Point3 p = gen.next(), q = gen.next();
-      ok &= !(p == q);
-      l = exact_line_through(p, q);
-    }
-    if (!ok) continue;
+    const auto drawn = test::next_lines<5>(gen);  // four inputs and one probe line
+    if (!drawn) continue;
+    const std::array<PluckerLine<Exact>, 5>& in = *drawn;
     const auto r = lines_through_four_lines({in[0], in[1], in[2], in[3]});
     const std::string where = std::string(test::family_name(gen.family)) + " case " + std::to_string(i);
     for (const auto& x : r.lines) {
