@@ -17,6 +17,19 @@
 
 namespace exactvis::shadows {
 
+std::vector<ArrangementCurve> arrangement_curves(const std::vector<DiscontinuityCurve>& curves,
+                                                 const ReceiverFrame& frame) {
+  std::vector<ArrangementCurve> out;
+  out.reserve(curves.size());
+  for (const auto& c : curves) {
+    ArrangementCurve a;
+    for (const auto& p : c.points) a.points.push_back(frame.to_uv(p));
+    if (c.kind == DiscontinuityCurve::Kind::EEE) a.conic = c.conic;
+    out.push_back(std::move(a));
+  }
+  return out;
+}
+
 ShadowResult compute_shadows(const Scene& scene, const ShadowOptions& options) {
   if (options.light.empty()) throw std::invalid_argument("compute_shadows: no light triangles");
   ShadowResult res;
@@ -38,10 +51,10 @@ ShadowResult compute_shadows(const Scene& scene, const ShadowOptions& options) {
   eeo.parallel = options.parallel;
   EvResult ev = enumerate_ev_events(scene, evo);
   res.stats.ev_events = ev.events.size();
+  BlockerEvOptions bo;  // the blocker-blocker EV and EEE events
+  bo.parallel = options.parallel;
+  bo.progress = options.progress;
   if (options.blocker_events) {
-    BlockerEvOptions bo;
-    bo.parallel = options.parallel;
-    bo.progress = options.progress;
     const auto before_bb = std::chrono::steady_clock::now();
     EvResult bb = blocker_ev_events(scene, options.light, bo);
     res.stats.seconds_blocker_ev = std::chrono::duration<double>(std::chrono::steady_clock::now() - before_bb).count();
@@ -52,9 +65,6 @@ ShadowResult compute_shadows(const Scene& scene, const ShadowOptions& options) {
   EeeResult eee = enumerate_eee_events(scene, eeo);
   res.stats.eee_events = eee.events.size();
   if (options.blocker_events) {
-    BlockerEvOptions bo;
-    bo.parallel = options.parallel;
-    bo.progress = options.progress;
     const auto before_bb = std::chrono::steady_clock::now();
     EeeResult bb = blocker_eee_events(scene, options.light, bo);
     res.stats.seconds_blocker_eee =
@@ -80,20 +90,10 @@ ShadowResult compute_shadows(const Scene& scene, const ShadowOptions& options) {
     const ReceiverFrame frame = receiver_frame(scene, out.triangle);
     if (const auto it = curves.find(rid); it != curves.end()) out.curves = it->second;
     for (auto& c : contact_curves(scene, index, options.light, out.triangle)) out.curves.push_back(std::move(c));
+    const std::vector<ArrangementCurve> arcs = arrangement_curves(out.curves, frame);
     std::vector<std::vector<std::array<Exact, 2>>> polylines;
-    for (const auto& c : out.curves) {
-      std::vector<std::array<Exact, 2>> pl;
-      for (const auto& p : c.points) pl.push_back(frame.to_uv(p));
-      polylines.push_back(std::move(pl));
-    }
+    for (const auto& a : arcs) polylines.push_back(a.points);
     out.mesh = receiver_faces(polylines);
-    std::vector<ArrangementCurve> arcs;
-    for (std::size_t k = 0; k < out.curves.size(); ++k) {
-      ArrangementCurve a;
-      a.points = polylines[k];
-      if (out.curves[k].kind == DiscontinuityCurve::Kind::EEE) a.conic = out.curves[k].conic;
-      arcs.push_back(std::move(a));
-    }
     std::vector<std::array<Exact, 2>> queries;
     for (const auto& f : out.mesh.faces) queries.push_back(f.sample);
     ReceiverArrangement arr = receiver_arrangement(arcs, queries);

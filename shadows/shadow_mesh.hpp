@@ -8,8 +8,10 @@
 #include "kernel/number_types.hpp"
 #include "kernel/scene.hpp"
 #include "shadows/backprojection.hpp"
+#include "shadows/conic_arrangement.hpp"
 #include "shadows/discontinuity_curves.hpp"
 #include "shadows/receiver_faces.hpp"
+#include "shadows/receiver_frame.hpp"
 
 #include <cstddef>
 #include <cstdint>
@@ -80,6 +82,12 @@ struct ShadowResult {
   std::vector<ReceiverShadows> receivers;  // in the order of ShadowOptions::receivers (or of the scene)
   ShadowStats stats;
 };
+
+// Input: a receiver's discontinuity curves and its frame. Output: the curves in the receiver's (u, v) frame
+// as the exact arrangement takes them (conic_arrangement.hpp): every point mapped exactly, EEE curves with
+// their conic, the others polylines; same order as `curves`. Cost: O(points).
+std::vector<ArrangementCurve> arrangement_curves(const std::vector<DiscontinuityCurve>& curves,
+                                                 const ReceiverFrame& frame);
 
 // Input: scene (loaded, with the light's triangles in it), options (light non-empty). Output: the mesh.
 // Exact except where the types say double. Cost: the light-restricted EV and EEE enumeration

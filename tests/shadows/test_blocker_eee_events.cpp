@@ -43,17 +43,6 @@ Scene hole_scene() {
 
 bool hand_umbra(const Exact& x, const Exact& y) { return 4 * x + 3 * y >= Exact(3, 2); }
 
-std::vector<ArrangementCurve> arrangement_curves(const ReceiverShadows& rec, const ReceiverFrame& f) {
-  std::vector<ArrangementCurve> out;
-  for (const auto& c : rec.curves) {
-    ArrangementCurve a;
-    for (const auto& p : c.points) a.points.push_back(f.to_uv(p));
-    if (c.kind == DiscontinuityCurve::Kind::EEE) a.conic = c.conic;
-    out.push_back(std::move(a));
-  }
-  return out;
-}
-
 TEST(BlockerEeeEvents, TheThreeEdgesGiveTheHandDerivedEvent) {
   const Scene s = hole_scene();
   const EeeResult r = blocker_eee_events(s, object_triangles(s, "lamp"));
@@ -99,7 +88,7 @@ int mixed_faces(const Scene& s, bool blocker_events) {
     umbra.push_back(hand_umbra(x, y));
     queries.push_back(frame.to_uv(Vec3<Exact>{x, y, 0}));
   }
-  const ReceiverArrangement arr = receiver_arrangement(arrangement_curves(rec, frame), queries);
+  const ReceiverArrangement arr = receiver_arrangement(arrangement_curves(rec.curves, frame), queries);
   EXPECT_FALSE(arr.failed);
   std::map<int, std::set<bool>> classes;
   for (std::size_t k = 0; k < queries.size(); ++k) {
@@ -188,7 +177,7 @@ TEST(BlockerEeeEvents, EveryPointOfAFaceHasTheFaceClass) {
         at.push_back(p);
         queries.push_back(f.to_uv(p));
       }
-      const ReceiverArrangement arr = receiver_arrangement(arrangement_curves(rec, f), queries);
+      const ReceiverArrangement arr = receiver_arrangement(arrangement_curves(rec.curves, f), queries);
       ASSERT_FALSE(arr.failed || rec.arrangement_failed) << arr.failure;
       EXPECT_EQ(arr.trimmed_arcs, 0u);
       ++receivers;

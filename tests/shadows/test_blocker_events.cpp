@@ -67,13 +67,9 @@ int mixed_faces(const Scene& s, bool blocker_events) {
   const ShadowResult res = compute_shadows(s, opt);
   const ReceiverShadows& rec = res.receivers.at(0);
   const ReceiverFrame frame = receiver_frame(s, rec.triangle);
-  std::vector<ArrangementCurve> curves;
+  const std::vector<ArrangementCurve> curves = arrangement_curves(rec.curves, frame);
   int at_half = 0;
   for (const auto& c : rec.curves) {
-    ArrangementCurve a;
-    for (const auto& p : c.points) a.points.push_back(frame.to_uv(p));
-    if (c.kind == DiscontinuityCurve::Kind::EEE) a.conic = c.conic;
-    curves.push_back(std::move(a));
     if (c.blocker_blocker) {
       ++at_half;
       for (const auto& p : c.points) {

@@ -15,18 +15,6 @@ namespace {
 
 using shadow_test::object_triangles;
 
-// The receiver's curves as shadow_mesh hands them to the arrangement.
-std::vector<ArrangementCurve> arrangement_curves(const ReceiverShadows& rec, const ReceiverFrame& f) {
-  std::vector<ArrangementCurve> out;
-  for (const auto& c : rec.curves) {
-    ArrangementCurve a;
-    for (const auto& p : c.points) a.points.push_back(f.to_uv(p));
-    if (c.kind == DiscontinuityCurve::Kind::EEE) a.conic = c.conic;
-    out.push_back(std::move(a));
-  }
-  return out;
-}
-
 TEST(ShadowMesh, TextbookUmbraAndPenumbraAreTheHandDerivedSquares) {
   const Scene s = shadow_test::textbook_scene();
   ShadowOptions opt;
@@ -115,7 +103,7 @@ TEST(ShadowMesh, FaceClassesSurviveOracleLightSampling) {
                      Exact(w2) * rec.mesh.vertices[tri[2]][k]) / sum;
           bool in_face = true;
           if (!rec.arrangement_failed) {
-            const ReceiverArrangement located = receiver_arrangement(arrangement_curves(rec, f), {uv});
+            const ReceiverArrangement located = receiver_arrangement(arrangement_curves(rec.curves, f), {uv});
             in_face = located.query_faces.at(0) == static_cast<int>(fi);
           }
           if (in_face) at.push_back(shadow_test::oracle_point(f.to_3d(uv[0], uv[1])));
@@ -168,7 +156,7 @@ int check_faces_with_oracle(const Scene& s, const ShadowOptions& opt, const Shad
             uv[k] = (Exact(2) * rec.mesh.vertices[tri[0]][k] + Exact(3) * rec.mesh.vertices[tri[1]][k] +
                      Exact(5) * rec.mesh.vertices[tri[2]][k]) / Exact(10);
           if (rec.arrangement_failed ||
-              receiver_arrangement(arrangement_curves(rec, f), {uv}).query_faces.at(0) == static_cast<int>(fi))
+              receiver_arrangement(arrangement_curves(rec.curves, f), {uv}).query_faces.at(0) == static_cast<int>(fi))
             at.push_back(shadow_test::oracle_point(f.to_3d(uv[0], uv[1])));
           break;
         }
