@@ -5,6 +5,7 @@
 #include "aspect/convex_aspect_graph.hpp"
 
 #include "tests/aspect/aspect_test_models.hpp"
+#include "tests/exact_to_mpq.hpp"
 
 #include <gtest/gtest.h>
 
@@ -16,11 +17,7 @@ namespace {
 using namespace exactvis;
 using namespace exactvis::aspect_test;
 
-mpq_class q(const Exact& x) {
-  mpq_class r;
-  mpq_set(r.get_mpq_t(), x.mpq());
-  return r;
-}
+using exact_to_mpq::q;
 
 AspectGraph3 graph(const Scene& s, ViewModel v) {
   const ConvexModel m = convex_model(s);

@@ -6,6 +6,7 @@
 #include "aspect/eee_direction_cone.hpp"
 
 #include "oracles/rational_geometry.hpp"
+#include "tests/exact_to_mpq.hpp"
 
 #include <gtest/gtest.h>
 
@@ -16,12 +17,8 @@ namespace {
 
 using namespace exactvis;
 
-mpq_class q(const Exact& x) {
-  mpq_class r;
-  mpq_set(r.get_mpq_t(), x.mpq());
-  return r;
-}
-oracle::QVec qv(const Vec3<Exact>& v) { return {q(v.x), q(v.y), q(v.z)}; }
+using exact_to_mpq::q;
+using exact_to_mpq::qv;
 
 // Whether a line of direction d meets l_1, l_2 and l_3 (std::nullopt when the construction does not apply:
 // d parallel to l_1, or l_2 parallel to the plane through l_1 along d).

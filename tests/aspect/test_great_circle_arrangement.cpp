@@ -7,6 +7,7 @@
 #include "aspect/great_circle_arrangement.hpp"
 
 #include "oracles/aspect_oracle.hpp"
+#include "tests/exact_to_mpq.hpp"
 
 #include <gtest/gtest.h>
 
@@ -18,12 +19,8 @@ namespace {
 
 using namespace exactvis;
 
-mpq_class q(const Exact& x) {
-  mpq_class r;
-  mpq_set(r.get_mpq_t(), x.mpq());
-  return r;
-}
-oracle::QVec qv(const Vec3<Exact>& v) { return {q(v.x), q(v.y), q(v.z)}; }
+using exact_to_mpq::q;
+using exact_to_mpq::qv;
 
 std::string signs_at(const std::vector<oracle::QVec>& normals, const oracle::QVec& d) {
   std::string s;

@@ -3,6 +3,7 @@
 #include "aspect/plane_arrangement_3.hpp"
 
 #include "oracles/aspect_oracle.hpp"
+#include "tests/exact_to_mpq.hpp"
 
 #include <gtest/gtest.h>
 
@@ -13,12 +14,8 @@ namespace {
 
 using namespace exactvis;
 
-mpq_class q(const Exact& x) {
-  mpq_class r;
-  mpq_set(r.get_mpq_t(), x.mpq());
-  return r;
-}
-oracle::QVec qv(const Vec3<Exact>& v) { return {q(v.x), q(v.y), q(v.z)}; }
+using exact_to_mpq::q;
+using exact_to_mpq::qv;
 
 std::int64_t choose(std::int64_t n, int k) {
   std::int64_t r = 1;

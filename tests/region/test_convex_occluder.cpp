@@ -5,6 +5,7 @@
 
 #include "oracles/rational_geometry.hpp"
 #include "tests/region/pvs_test_scenes.hpp"
+#include "tests/exact_to_mpq.hpp"
 
 #include <gtest/gtest.h>
 
@@ -15,11 +16,7 @@ namespace {
 
 using pvs_test::SceneBuilder;
 
-mpq_class q(const Exact& x) {
-  mpq_class r;
-  mpq_set(r.get_mpq_t(), x.mpq());
-  return r;
-}
+using exact_to_mpq::q;
 oracle::QVec to_q(const RationalPoint3& p) { return {q(p.x), q(p.y), q(p.z)}; }
 oracle::QVec to_q(const Point3& p) { return oracle::qvec(p.x, p.y, p.z); }
 
