@@ -155,11 +155,15 @@ bool render_shadows_png(const std::string& temp_path, const Scene& scene, const 
   renderer->ResetCamera();
   renderer->ResetCameraClippingRange();
 
+  return save_renderer_png(renderer, width, height, temp_path);
+}
+
+bool save_renderer_png(vtkRenderer* renderer, int width, int height, const std::string& path) {
   vtkNew<vtkRenderWindow> window;
   window->SetOffScreenRendering(1);
   window->AddRenderer(renderer);
   window->SetSize(width, height);
-  return save_render_window_png(window, temp_path);
+  return save_render_window_png(window, path);
 }
 
 bool save_render_window_png(vtkRenderWindow* window, const std::string& path) {

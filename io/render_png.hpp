@@ -14,12 +14,17 @@
 #include <vector>
 
 class vtkRenderWindow;
+class vtkRenderer;
 
 namespace exactvis {
 
 // Renders `window` (offscreen, size and renderers set) and writes its back buffer to `path` as PNG.
 // Returns whether the PNG writer succeeded. Shared by every offscreen picture (io/render_partition_png).
 bool save_render_window_png(vtkRenderWindow* window, const std::string& path);
+
+// One renderer filling an offscreen width x height window, rendered and written to `path` as PNG (through
+// save_render_window_png). Shared by the single-view pictures (shadows, io/render_scene_png).
+bool save_renderer_png(vtkRenderer* renderer, int width, int height, const std::string& path);
 
 // Renders to `temp_path` (.png), width x height pixels. Returns false (or throws OutputError) on failure.
 bool render_shadows_png(const std::string& temp_path, const Scene& scene, const shadows::ShadowResult& result,

@@ -18,7 +18,6 @@
 #include <vtkPolyDataMapper2D.h>
 #include <vtkProperty.h>
 #include <vtkProperty2D.h>
-#include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
 #include <vtkTextActor.h>
 #include <vtkTextProperty.h>
@@ -219,11 +218,7 @@ bool render_scene_png(const std::string& temp_path, const ScenePicture& picture,
     cam->Zoom(1.25);  // ResetCamera fits the bounding sphere; the box's corners are well inside the view
     renderer->ResetCameraClippingRange();
   }
-  vtkNew<vtkRenderWindow> window;
-  window->SetOffScreenRendering(1);
-  window->AddRenderer(renderer);
-  window->SetSize(width, height);
-  return save_render_window_png(window, temp_path);
+  return save_renderer_png(renderer, width, height, temp_path);
 }
 
 }  // namespace exactvis
