@@ -365,12 +365,33 @@ AspectGraph3 plane_aspect_graph(const Scene& scene, const ClosedSolidFronts& fro
   const int nc = static_cast<int>(cells.size());
 
   // Per cell: the sign vector against the lines, then each triangle's visibility from it (exact).
+  // Signs: interval arithmetic first (the coefficients and the sample as enclosing double intervals), exact
+  // rationals only when the interval holds 0 (mostly the lines holding the cell, whose sign is 0).
+  const auto enclosure = [](const Exact& v) {
+    const auto [lo, hi] = tight_interval(v);
+    return Interval(lo, hi);
+  };
+  std::vector<std::array<Interval, 3>> coef(L);
+  {
+    CGAL::Protect_FPU_rounding<true> guard;
+    for (std::size_t k = 0; k < L; ++k)
+      coef[k] = {enclosure(s.lines[k][0]), enclosure(s.lines[k][1]), enclosure(s.lines[k][2])};
+  }
   std::vector<std::string> signs(nc, std::string(L, '0'));
   std::vector<std::string> seen(nc, std::string(n, '0'));
   tbb::parallel_for(0, nc, [&](int c) {
     const auto& [x, y] = samples[c];
+    {
+      CGAL::Protect_FPU_rounding<true> guard;
+      const Interval ix = enclosure(x), iy = enclosure(y);
+      for (std::size_t k = 0; k < L; ++k) {
+        const Interval v = coef[k][0] * ix + coef[k][1] * iy + coef[k][2];
+        signs[c][k] = v.inf() > 0 ? '+' : (v.sup() < 0 ? '-' : 'x');
+      }
+    }
     for (std::size_t k = 0; k < L; ++k)
-      signs[c][k] = sign_char(CGAL::sign(s.lines[k][0] * x + s.lines[k][1] * y + s.lines[k][2]));
+      if (signs[c][k] == 'x')
+        signs[c][k] = sign_char(CGAL::sign(s.lines[k][0] * x + s.lines[k][1] * y + s.lines[k][2]));
     const auto sg = [&](int line, int o) {
       const char ch = signs[c][line];
       return ch == '0' ? 0 : (ch == '+' ? o : -o);
