@@ -8,6 +8,7 @@
 #include "aspect/convex_model.hpp"
 #include "aspect/orthographic_aspect_graph.hpp"
 #include "aspect/partition_picture.hpp"
+#include "aspect/plane_aspect_graph.hpp"
 #include "io/atomic_file.hpp"
 #include "io/load_scene.hpp"
 #include "io/render_partition_png.hpp"
@@ -198,6 +199,47 @@ int run_general_orthographic(const AspectOptions& o, const Scene& scene, const s
   return 0;
 }
 
+// Perspective viewpoints on z = H, a closed solid that is not convex (aspect/plane_aspect_graph: its front
+// parts must be convex, else a one-line error).
+int run_general_plane(const AspectOptions& o, const Scene& scene, const Exact& height, const std::string& label,
+                      OutputFiles& outputs) {
+  const ClosedSolidFronts fronts = closed_solid_fronts(scene);
+  if (!fronts.ok) throw InputError(label + ": " + fronts.problem);
+  const std::size_t lines = plane_aspect_lines(scene, fronts, height);
+  const bool pictures = !o.vtp.empty() || !o.png.empty();
+  const AspectGraph3 g = [&] {
+    app::FractionProgress bar("aspect: arrangement", app::progress_wanted(o.quiet));
+    return plane_aspect_graph(scene, fronts, height, bar.callback(), pictures);
+  }();
+  const ojson j = graph_json(g);
+  if (!o.output.empty()) exactvis::app::write_json_output(outputs, o.output, j);
+  if (pictures) {
+    const Box3 b = bounding_box(scene);
+    const double w = std::max(b.hi.x - b.lo.x, b.hi.y - b.lo.y), h = CGAL::to_double(height);
+    const PartitionPicture pic =
+        plane_picture_of_cells(g, h, b.lo.x - w, b.lo.y - w, b.hi.x + w, b.hi.y + w, o.vtp.empty() ? 120 : 240);
+    if (!o.vtp.empty())
+      outputs.write(o.vtp, [&](const std::string& temp) {
+        write_surface_with_lines_vtp(temp, pic.points, pic.triangles, pic.triangle_region, pic.curves,
+                                     std::vector<std::int64_t>(pic.curves.size(), -1), "region");
+        return true;
+      });
+    if (!o.png.empty()) {
+      std::vector<int> values(scene.triangles.size());
+      for (std::size_t i = 0; i < values.size(); ++i) values[i] = static_cast<int>(i);
+      const std::vector<PngPanel> panels = png_panels(scene, values, g, &pic, h);
+      outputs.write(o.png, [&](const std::string& temp) { return render_panels_png(temp, panels, 480), true; });
+    }
+  }
+  outputs.commit();
+  if (o.json) std::cout << app::json_text(j);
+  else
+    std::cout << summary(g, "a non-convex closed model with " + std::to_string(scene.triangles.size()) +
+                                " triangles (" + std::to_string(lines) + " trace lines)")
+              << "\n";
+  return 0;
+}
+
 int run(const AspectOptions& o) {
   const int views = int(o.orthographic) + int(o.perspective) + int(!o.plane.empty());
   if (views != 1) throw std::invalid_argument("--orthographic, --perspective or --plane z=H: give exactly one");
@@ -220,9 +262,7 @@ int run(const AspectOptions& o) {
       throw InputError(label + ": not a closed convex model (" + model.problem +
                        "); --perspective takes convex models only: use --plane z=H for perspective viewpoints on a "
                        "plane");
-    if (!o.plane.empty())
-      throw InputError(label + ": not a closed convex model (" + model.problem +
-                       "); --plane z=H on non-convex models is not implemented yet");
+    if (!o.plane.empty()) return run_general_plane(o, scene, height, label, outputs);
     return run_general_orthographic(o, scene, label, outputs);
   }
   const ViewModel view =
@@ -282,7 +322,7 @@ const exactvis::app::CommandRegistration registration(
                                 "(docs/theory.md 10.5)");
       auto* per = sub->add_flag("--perspective", opts->perspective,
                                 "viewpoints are points outside the model (convex models only)");
-      auto* pla = sub->add_option("--plane", opts->plane, "viewpoints on the plane z=H (H a number or num/den; convex models)");
+      auto* pla = sub->add_option("--plane", opts->plane, "viewpoints on the plane z=H (H a number or num/den); convex models and closed solids whose front parts are convex (docs/theory.md 10.8)");
       ort->excludes(per)->excludes(pla);
       per->excludes(pla);
       exactvis::app::add_json_flag(*sub, opts->json, "print regions, aspects, adjacency and counts as JSON on stdout");

@@ -1,12 +1,10 @@
 #include "aspect/orthographic_aspect_graph.hpp"
 
 #include "aspect/aspect_regions.hpp"
+#include "aspect/front_part_hull.hpp"
 #include "aspect/great_circle_arrangement.hpp"
 #include "kernel/predicates.hpp"
 
-#include <CGAL/Simple_cartesian.h>
-#include <CGAL/Surface_mesh.h>
-#include <CGAL/convex_hull_3.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
@@ -60,10 +58,6 @@ struct Circles {
     if (fresh) normals.push_back(c), generators.emplace_back();
     return {it->second, CGAL::sign(s) > 0 ? 1 : -1};
   }
-};
-
-struct Edge {
-  int a, b;
 };
 
 // The sign chars of a cell that mean "v . d has sign s" for v = o * canonical.
@@ -140,61 +134,6 @@ bool in_hull(const Vec3<Exact>& a, const std::vector<Vec3<Exact>>& P) {
   return true;
 }
 
-// The convex hull of a front part's points (CGAL convex_hull_3 over exact rationals): its facet planes
-// (outward) and its edges as index pairs into the points; `full` = false when the points are coplanar.
-struct FrontHull {
-  bool full = false;
-  std::vector<std::pair<Vec3<Exact>, Exact>> facets;  // n . x <= c inside
-  std::vector<std::pair<std::size_t, std::size_t>> edges;
-  bool contains(const Vec3<Exact>& a) const {
-    for (const auto& [nv, c] : facets)
-      if (dot(nv, a) > c) return false;
-    return true;
-  }
-};
-
-FrontHull front_hull(const std::vector<Vec3<Exact>>& P) {
-  FrontHull h;
-  // Full-dimensional iff some four points are not coplanar.
-  std::size_t i1 = 1, i2 = 0, i3 = 0;
-  for (; i1 < P.size() && P[i1] == P[0]; ++i1) {}
-  Vec3<Exact> normal{Exact(0), Exact(0), Exact(0)};
-  for (std::size_t j = i1 + 1; j < P.size() && i2 == 0; ++j) {
-    const Vec3<Exact> c = cross(P[i1] - P[0], P[j] - P[0]);
-    if (!(c.x == 0 && c.y == 0 && c.z == 0)) i2 = j, normal = c;
-  }
-  for (std::size_t j = 0; j < P.size() && i2 != 0 && i3 == 0; ++j)
-    if (dot(normal, P[j] - P[0]) != 0) i3 = j;
-  if (i3 == 0) return h;
-  using K = CGAL::Simple_cartesian<Exact>;
-  std::vector<K::Point_3> pts;
-  std::map<std::array<Exact, 3>, std::size_t> index;
-  for (std::size_t i = 0; i < P.size(); ++i) {
-    pts.emplace_back(P[i].x, P[i].y, P[i].z);
-    index.emplace(std::array<Exact, 3>{P[i].x, P[i].y, P[i].z}, i);
-  }
-  CGAL::Surface_mesh<K::Point_3> mesh;
-  CGAL::convex_hull_3(pts.begin(), pts.end(), mesh);
-  const auto id = [&](auto v) {
-    const K::Point_3& p = mesh.point(v);
-    return index.at({p.x(), p.y(), p.z()});
-  };
-  Vec3<Exact> centroid{Exact(0), Exact(0), Exact(0)};
-  for (const auto& p : P) centroid = centroid + p;
-  const Exact count(static_cast<int>(P.size()));
-  centroid = Vec3<Exact>{centroid.x / count, centroid.y / count, centroid.z / count};
-  for (auto f : mesh.faces()) {
-    std::vector<std::size_t> c;
-    for (auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) c.push_back(id(v));
-    Vec3<Exact> nv = cross(P[c[1]] - P[c[0]], P[c[2]] - P[c[0]]);
-    if (dot(nv, centroid - P[c[0]]) > 0) nv = -nv;  // outward (the centroid is interior)
-    h.facets.push_back({nv, dot(nv, P[c[0]])});
-  }
-  for (auto e : mesh.edges()) h.edges.push_back({id(mesh.vertex(e, 0)), id(mesh.vertex(e, 1))});
-  h.full = true;
-  return h;
-}
-
 std::vector<std::pair<std::size_t, std::size_t>> all_pairs(std::size_t m) {
   std::vector<std::pair<std::size_t, std::size_t>> r;
   for (std::size_t u = 0; u < m; ++u)
@@ -214,7 +153,7 @@ Setup setup(const Scene& scene, const ClosedSolidFronts& fronts) {
   std::set<std::pair<int, int>> edge_set;
   for (const auto& t : scene.triangles)
     for (int k = 0; k < 3; ++k) edge_set.insert(std::minmax(t.v[k], t.v[(k + 1) % 3]));
-  std::vector<Edge> edges;
+  std::vector<std::array<int, 2>> edges;
   for (const auto& [a, b] : edge_set) edges.push_back({a, b});
   std::vector<Vec3<Exact>> vx(scene.vertices.size());
   for (std::size_t i = 0; i < vx.size(); ++i) vx[i] = to_rational(scene.vertices[i]);
@@ -281,21 +220,7 @@ Setup setup(const Scene& scene, const ClosedSolidFronts& fronts) {
         continue;
       }
       // Name the circle by an edge in the plane through a (not through a), preferring one on the line uw.
-      const Vec3<Exact>& a = vx[vtx];
-      std::array<int, 2> edge{-1, -1};
-      bool on_line = false;
-      for (const Edge& e : edges) {
-        if (e.a == vtx || e.b == vtx) continue;
-        const Vec3<Exact>& A = vx[e.a];
-        const Vec3<Exact>& B = vx[e.b];
-        if (dot(rc.normal, A - a) != 0 || dot(rc.normal, B - a) != 0) continue;
-        const Vec3<Exact> c = cross(B - A, a - A);
-        if (c.x == 0 && c.y == 0 && c.z == 0) continue;  // a on the edge's line: no EV set
-        const Vec3<Exact> d1 = cross(P[rc.w] - P[rc.u], A - P[rc.u]), d2 = cross(P[rc.w] - P[rc.u], B - P[rc.u]);
-        const bool collinear_uw = d1.x == 0 && d1.y == 0 && d1.z == 0 && d2.x == 0 && d2.y == 0 && d2.z == 0;
-        if (edge[0] < 0 || (collinear_uw && !on_line)) edge = {e.a, e.b}, on_line = collinear_uw;
-        if (on_line) break;
-      }
+      const std::array<int, 2> edge = ev_plane_edge(rc.normal, vtx, P[rc.u], P[rc.w], edges, vx);
       cone.name.push_back(edge);
     }
   });

@@ -149,8 +149,10 @@ PartitionPicture sphere_picture_of_cells(const AspectGraph3& graph, int subdivis
   return pic;
 }
 
-PartitionPicture plane_picture(const ConvexModel& model, const AspectGraph3& graph, double h, double x0, double y0,
-                               double x1, double y1, int cells) {
+namespace {
+
+// The square [x0, x1] x [y0, y1] of z = h as cells x cells squares, two triangles each.
+PartitionPicture square_grid(double h, double x0, double y0, double x1, double y1, int cells) {
   PartitionPicture pic;
   for (int j = 0; j <= cells; ++j)
     for (int i = 0; i <= cells; ++i) pic.points.push_back({x0 + (x1 - x0) * i / cells, y0 + (y1 - y0) * j / cells, h});
@@ -160,6 +162,36 @@ PartitionPicture plane_picture(const ConvexModel& model, const AspectGraph3& gra
       pic.triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
       pic.triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
     }
+  return pic;
+}
+
+// The line a x + b y = r clipped to the square (Liang-Barsky on a long segment), drawn slightly above it.
+void add_trace_line(PartitionPicture& pic, double a, double b, double r, double h, double x0, double y0, double x1,
+                    double y1, std::int64_t label) {
+  if (a == 0 && b == 0) return;
+  const double L = 4 * (std::abs(x1 - x0) + std::abs(y1 - y0) + std::abs(x0) + std::abs(y0) + std::abs(r));
+  const double px = a * r / (a * a + b * b), py = b * r / (a * a + b * b);  // closest point to the origin
+  const double dx = -b, dy = a;
+  double t0 = -L, t1 = L;
+  const auto clip = [&](double p, double q) {  // p t <= q
+    if (p == 0) return q >= 0;
+    const double t = q / p;
+    if (p < 0) t0 = std::max(t0, t);
+    else t1 = std::min(t1, t);
+    return t0 <= t1;
+  };
+  if (clip(-dx, px - x0) && clip(dx, x1 - px) && clip(-dy, py - y0) && clip(dy, y1 - py) && t0 < t1) {
+    const double z = h + 1e-3 * (std::abs(x1 - x0) + std::abs(y1 - y0));
+    pic.curves.push_back({{px + t0 * dx, py + t0 * dy, z}, {px + t1 * dx, py + t1 * dy, z}});
+    pic.curve_plane.push_back(label);
+  }
+}
+
+}  // namespace
+
+PartitionPicture plane_picture(const ConvexModel& model, const AspectGraph3& graph, double h, double x0, double y0,
+                               double x1, double y1, int cells) {
+  PartitionPicture pic = square_grid(h, x0, y0, x1, y1, cells);
   const auto P = planes_d(model);
   const RegionLookup lookup(model, graph);
   for (const auto& t : pic.triangles) {
@@ -168,27 +200,32 @@ PartitionPicture plane_picture(const ConvexModel& model, const AspectGraph3& gra
     pic.triangle_region.push_back(
         lookup([&](std::size_t k) { return P[k].n[0] * p.x + P[k].n[1] * p.y + P[k].n[2] * p.z - P[k].c; }));
   }
-  // Trace lines n_x x + n_y y = c - n_z h, clipped to the square (Liang-Barsky on a long segment).
-  for (std::size_t k = 0; k < P.size(); ++k) {
-    const double a = P[k].n[0], b = P[k].n[1], r = P[k].c - P[k].n[2] * h;
-    if (a == 0 && b == 0) continue;
-    const double L = 4 * (std::abs(x1 - x0) + std::abs(y1 - y0) + std::abs(x0) + std::abs(y0) + std::abs(r));
-    const double px = a * r / (a * a + b * b), py = b * r / (a * a + b * b);  // closest point to the origin
-    const double dx = -b, dy = a;
-    double t0 = -L, t1 = L;
-    const auto clip = [&](double p, double q) {  // p t <= q
-      if (p == 0) return q >= 0;
-      const double t = q / p;
-      if (p < 0) t0 = std::max(t0, t);
-      else t1 = std::min(t1, t);
-      return t0 <= t1;
-    };
-    if (clip(-dx, px - x0) && clip(dx, x1 - px) && clip(-dy, py - y0) && clip(dy, y1 - py) && t0 < t1) {
-      const double z = h + 1e-3 * (std::abs(x1 - x0) + std::abs(y1 - y0));
-      pic.curves.push_back({{px + t0 * dx, py + t0 * dy, z}, {px + t1 * dx, py + t1 * dy, z}});
-      pic.curve_plane.push_back(static_cast<std::int64_t>(k));
+  // Trace lines n_x x + n_y y = c - n_z h.
+  for (std::size_t k = 0; k < P.size(); ++k)
+    add_trace_line(pic, P[k].n[0], P[k].n[1], P[k].c - P[k].n[2] * h, h, x0, y0, x1, y1, static_cast<std::int64_t>(k));
+  return pic;
+}
+
+PartitionPicture plane_picture_of_cells(const AspectGraph3& graph, double h, double x0, double y0, double x1,
+                                        double y1, int cells) {
+  PartitionPicture pic = square_grid(h, x0, y0, x1, y1, cells);
+  std::unordered_map<std::string, int> region_of;
+  for (const auto& c : graph.sampled_cells) region_of.emplace(c.signs, c.region);
+  std::string signs(graph.circles.size(), '0');
+  for (const auto& t : pic.triangles) {
+    const Point3 m = corner_sum(pic, t);
+    // The centroid's double coordinates read as exact rationals; exact signs (display only).
+    const Exact x(m.x / 3), y(m.y / 3);
+    for (std::size_t k = 0; k < graph.circles.size(); ++k) {
+      const int sg = CGAL::sign(graph.circles[k].x * x + graph.circles[k].y * y + graph.circles[k].z);
+      signs[k] = sg > 0 ? '+' : (sg < 0 ? '-' : '0');
     }
+    const auto it = region_of.find(signs);
+    pic.triangle_region.push_back(it == region_of.end() ? -1 : it->second);
   }
+  for (std::size_t k = 0; k < graph.circles.size(); ++k)
+    add_trace_line(pic, CGAL::to_double(graph.circles[k].x), CGAL::to_double(graph.circles[k].y),
+                   -CGAL::to_double(graph.circles[k].z), h, x0, y0, x1, y1, static_cast<std::int64_t>(k));
   return pic;
 }
 

@@ -37,4 +37,11 @@ PartitionPicture sphere_picture_of_cells(const AspectGraph3& graph, int subdivis
 PartitionPicture plane_picture(const ConvexModel& model, const AspectGraph3& graph, double h, double x0, double y0,
                                double x1, double y1, int cells);
 
+// Plane graphs of non-convex models (aspect/plane_aspect_graph: graph.circles are the trace lines (A, B, C)
+// of {A x + B y + C = 0}, and the cells' sign vectors): the square as for plane_picture, each triangle
+// labelled with the region of the cell holding its centroid (-1 inside the model), and the lines drawn.
+// Cost: triangles x lines signs.
+PartitionPicture plane_picture_of_cells(const AspectGraph3& graph, double h, double x0, double y0, double x1,
+                                        double y1, int cells);
+
 }  // namespace exactvis

@@ -3,14 +3,16 @@
 // between successive sizes (log time / log m), time per region, and the ratio to the smallest size measured
 // in the same run. docs/performance.md, "Aspect graphs of convex models". Non-convex models
 // (aspect/orthographic_aspect_graph): two random convex polytopes side by side (each of `--pair-points`
-// points), orthographic; growth against the number of triangles n.
+// points), orthographic; growth against the number of triangles n. `--plane-pair-points`: the same pairs,
+// perspective viewpoints on the plane z = H through both bodies (aspect/plane_aspect_graph).
 //
 // Usage: bench_aspect [--points 8,16,32,64,128] [--perspective-points 8,16,32] [--pair-points 4,6,8,12]
-//                     [--seed S] [--repeat R]
+//                     [--plane-pair-points 4,8] [--seed S] [--repeat R]
 #include "aspect/convex_aspect_graph.hpp"
 #include "aspect/closed_solid_fronts.hpp"
 #include "aspect/convex_model.hpp"
 #include "aspect/orthographic_aspect_graph.hpp"
+#include "aspect/plane_aspect_graph.hpp"
 #include "aspect/random_convex_polytope.hpp"
 #include "bench/bench_util.hpp"
 
@@ -124,10 +126,49 @@ void pair_table(const std::vector<std::string>& sizes, std::uint64_t seed, int r
   }
 }
 
+// The pairs on the plane z = 2^17 (through both bodies: the second is raised by 2^20 / 5).
+void plane_pair_table(const std::vector<std::string>& sizes, std::uint64_t seed, int repeat) {
+  std::printf("non-convex: two convex polytopes side by side, on the plane z = 131072 (growth = d log time / d log n)\n"
+              "%8s %9s %8s %9s %9s %10s %10s %10s %10s %8s %8s\n",
+              "points", "triangles", "lines", "cells", "regions", "adjacency", "cpu_s", "wall_s", "us/cell", "ratio",
+              "growth");
+  double first = 0, prev = 0;
+  std::size_t prev_n = 0;
+  const Exact h(1 << 17);
+  for (std::size_t i = 0; i < sizes.size(); ++i) {
+    const Scene s = polytope_pair(std::atoi(sizes[i].c_str()), seed);
+    std::vector<double> times, walls;
+    std::size_t lines = 0, cells = 0, regions = 0, adjacency = 0;
+    for (int k = 0; k < repeat; ++k) {
+      const double t0 = cpu_now(), w0 = bench::now();
+      const ClosedSolidFronts f = closed_solid_fronts(s);
+      if (!f.ok) return (void)std::printf("rejected: %s\n", f.problem.c_str());
+      const AspectGraph3 g = plane_aspect_graph(s, f, h, nullptr, /*with_cells=*/false);
+      times.push_back(cpu_now() - t0);
+      walls.push_back(bench::now() - w0);
+      lines = plane_aspect_lines(s, f, h);
+      cells = g.cells[0] + g.cells[1] + g.cells[2];
+      regions = g.regions.size();
+      adjacency = g.adjacency.size();
+    }
+    std::sort(times.begin(), times.end());
+    std::sort(walls.begin(), walls.end());
+    const double t = times[times.size() / 2], w = walls[walls.size() / 2];
+    if (i == 0) first = t;
+    const std::size_t n = s.triangles.size();
+    const double growth = i == 0 ? 0 : std::log(t / prev) / std::log(double(n) / prev_n);
+    std::printf("%8s %9zu %8zu %9zu %9zu %10zu %10.4f %10.4f %10.2f %8.1f %8.2f\n", sizes[i].c_str(), n, lines,
+                cells, regions, adjacency, t, w, 1e6 * t / cells, t / first, growth);
+    std::fflush(stdout);
+    prev = t;
+    prev_n = n;
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::string points = "8,16,32,64,128", persp = "8,16,32", pairs = "4,6,8,12";
+  std::string points = "8,16,32,64,128", persp = "8,16,32", pairs = "4,6,8,12", plane_pairs;
   std::uint64_t seed = 1;
   int repeat = 3;
   for (int i = 1; i + 1 < argc; i += 2) {
@@ -135,6 +176,7 @@ int main(int argc, char** argv) {
     if (a == "--points") points = argv[i + 1];
     else if (a == "--perspective-points") persp = argv[i + 1];
     else if (a == "--pair-points") pairs = argv[i + 1];
+    else if (a == "--plane-pair-points") plane_pairs = argv[i + 1];
     else if (a == "--seed") seed = std::strtoull(argv[i + 1], nullptr, 10);
     else if (a == "--repeat") repeat = std::max(1, std::atoi(argv[i + 1]));
     else return std::fprintf(stderr, "bench_aspect: unknown option %s\n", a.c_str()), 2;
@@ -143,5 +185,6 @@ int main(int argc, char** argv) {
         ViewModel::Orthographic, repeat);
   table("perspective (regions of space outside the model)", bench::split(persp), seed, ViewModel::Perspective, repeat);
   pair_table(bench::split(pairs), seed, repeat);
+  if (!plane_pairs.empty()) plane_pair_table(bench::split(plane_pairs), seed, repeat);
   return 0;
 }

@@ -121,11 +121,21 @@ TEST(AspectCli, PerspectiveOnANonConvexModelPointsToPlane) {
   EXPECT_NE(r.err.find("--plane"), std::string::npos) << r.err;
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1);
   EXPECT_FALSE(fs::exists(d / "o.json"));
-  // --plane on non-convex models: not implemented, said so in one line.
-  const auto o = run_exactvis(d, "aspect " + (d / "two.obj").string() + " --plane z=0");
-  EXPECT_EQ(o.status, 1);
-  EXPECT_NE(o.err.find("not implemented yet"), std::string::npos) << o.err;
-  EXPECT_EQ(std::count(o.err.begin(), o.err.end(), '\n'), 1);
+  // --plane on this closed solid with convex front parts (docs/theory.md 10.8): the facing faces are hidden
+  // only on the strips behind the other box, 13 regions at mid-height (as tests/aspect's hand count).
+  const auto o = run_exactvis(d, "aspect " + (d / "two.obj").string() + " --plane z=1/2 --json -q");
+  ASSERT_EQ(o.status, 0) << o.err;
+  const auto j = nlohmann::json::parse(o.out);
+  ASSERT_EQ(j.size(), 3u);
+  EXPECT_EQ(j["counts"]["regions"], 13);
+  EXPECT_EQ(j["counts"]["edges"], j["adjacency"].size());
+  for (const auto& reg : j["regions"]) EXPECT_EQ(reg["sample"][2], 0.5);
+  EXPECT_EQ(j["adjacency"][0][2]["type"], "EV");
+  const auto t = run_exactvis(d, "aspect " + (d / "two.obj").string() + " --plane z=1/2");
+  EXPECT_NE(t.out.find("plane aspect graph of a non-convex closed model with 24 triangles"), std::string::npos) << t.out;
+  const auto v = run_exactvis(d, "aspect " + (d / "two.obj").string() + " --plane z=1/2 -q --vtp " + (d / "p.vtp").string());
+  EXPECT_EQ(v.status, 0) << v.err;
+  EXPECT_GT(fs::file_size(d / "p.vtp"), 1000u);
 }
 
 // Two boxes with a gap of 2: orthographic works (docs/theory.md 10.5), the JSON shape, 26 regions;
@@ -164,6 +174,12 @@ TEST(AspectCli, OrthographicNonConvexModels) {
   EXPECT_NE(e.err.find("three.obj: the part of the model in front of triangle"), std::string::npos) << e.err;
   EXPECT_NE(e.err.find("not implemented yet"), std::string::npos) << e.err;
   EXPECT_EQ(std::count(e.err.begin(), e.err.end(), '\n'), 1);
+  EXPECT_FALSE(fs::exists(d / "o.json"));
+  // The same one-line error for a plane of viewpoints (the class of 10.5 is required there too).
+  const auto p = run_exactvis(d, "aspect " + (d / "three.obj").string() + " --plane z=1/2 -o " + (d / "o.json").string());
+  EXPECT_EQ(p.status, 1);
+  EXPECT_NE(p.err.find("three.obj: the part of the model in front of triangle"), std::string::npos) << p.err;
+  EXPECT_EQ(std::count(p.err.begin(), p.err.end(), '\n'), 1);
   EXPECT_FALSE(fs::exists(d / "o.json"));
 }
 

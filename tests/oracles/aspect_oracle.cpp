@@ -240,3 +240,144 @@ bool plane_arrangement_is_simple(const std::vector<std::pair<QVec, mpq_class>>& 
 }
 
 }  // namespace oracle
+
+namespace oracle {
+
+namespace {
+
+using Poly3 = std::vector<QVec>;
+
+// Sutherland-Hodgman: the part of a convex polygon with m . (y - q) >= 0 (closed), exact.
+Poly3 clip_closed(const Poly3& poly, const QVec& m, const QVec& q) {
+  Poly3 out;
+  for (std::size_t i = 0; i < poly.size(); ++i) {
+    const QVec& a = poly[i];
+    const QVec& b = poly[(i + 1) % poly.size()];
+    const mpq_class fa = dot(m, a - q), fb = dot(m, b - q);
+    if (fa >= 0) out.push_back(a);
+    if ((fa > 0 && fb < 0) || (fa < 0 && fb > 0)) out.push_back(a + mpq_class(fa / (fa - fb)) * (b - a));
+  }
+  return out;
+}
+
+mpq_class cross2(const P2& o, const P2& a, const P2& b) { return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x); }
+
+// q inside (or on) the convex polygon `poly` (counter-clockwise, consecutive duplicates allowed).
+bool in_convex(const std::vector<P2>& poly, const P2& q) {
+  for (std::size_t i = 0; i < poly.size(); ++i) {
+    const P2& a = poly[i];
+    const P2& b = poly[(i + 1) % poly.size()];
+    if (a.x == b.x && a.y == b.y) continue;
+    if (sign(cross2(a, b, q)) < 0) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+std::vector<int> point_aspect(const std::vector<OTriangle>& model, const QVec& p) {
+  std::vector<int> seen;
+  for (std::size_t t = 0; t < model.size(); ++t) {
+    const OTriangle& T = model[t];
+    QVec nrm = normal(T);
+    if (is_zero(nrm)) continue;
+    mpq_class hp = dot(nrm, p - T[0]);
+    if (hp == 0) continue;  // p in t's plane: t has no image
+    if (hp < 0) nrm = mpq_class(-1) * nrm, hp = -hp;
+    const auto h = [&](const QVec& y) { return mpq_class(dot(nrm, y - T[0])); };
+    // The pyramid conv(p, t): t's plane side of p and the three planes through p and t's edges.
+    std::vector<std::pair<QVec, QVec>> planes{{nrm, T[0]}};
+    for (int j = 0; j < 3; ++j) {
+      QVec m = cross(T[j] - p, T[(j + 1) % 3] - p);
+      if (sign(dot(m, T[(j + 2) % 3] - p)) < 0) m = mpq_class(-1) * m;
+      planes.push_back({m, p});
+    }
+    // 2D coordinates in t's plane: drop the dominant axis of its normal.
+    int k = 0;
+    const mpq_class c[3] = {nrm.x, nrm.y, nrm.z};
+    for (int i = 1; i < 3; ++i)
+      if (abs(c[i]) > abs(c[k])) k = i;
+    const auto to2 = [&](const QVec& v) {
+      return k == 0 ? P2{v.y, v.z} : (k == 1 ? P2{v.z, v.x} : P2{v.x, v.y});
+    };
+    std::vector<std::vector<P2>> polys;  // t's image first, then the shadows, all counter-clockwise
+    const auto add_poly = [&](std::vector<P2> poly) {
+      mpq_class area = 0;
+      for (std::size_t i = 1; i + 1 < poly.size(); ++i) area += cross2(poly[0], poly[i], poly[i + 1]);
+      if (area == 0) return false;
+      if (area < 0) std::reverse(poly.begin(), poly.end());
+      polys.push_back(std::move(poly));
+      return true;
+    };
+    add_poly({to2(T[0]), to2(T[1]), to2(T[2])});
+    for (std::size_t u = 0; u < model.size(); ++u) {
+      if (u == t) continue;
+      Poly3 poly(model[u].begin(), model[u].end());
+      for (const auto& [m, q] : planes) {
+        if (poly.empty()) break;
+        poly = clip_closed(poly, m, q);
+      }
+      bool ahead = false;
+      for (const auto& y : poly) ahead |= h(y) > 0;
+      if (!ahead) continue;  // nothing strictly between t's plane and p
+      std::vector<P2> shadow;
+      for (const auto& y : poly) {
+        const mpq_class hy = h(y);
+        if (hy == hp) throw std::invalid_argument("point_aspect: the viewpoint lies on the model");
+        shadow.push_back(to2(p + mpq_class(hp / (hp - hy)) * (y - p)));
+      }
+      add_poly(std::move(shadow));
+    }
+    // Vertical slabs over t's image; samples between consecutive edges of the polygons at the slab middles.
+    std::vector<Seg2> segs;
+    for (const auto& poly : polys)
+      for (std::size_t i = 0; i < poly.size(); ++i) {
+        P2 a = poly[i], b = poly[(i + 1) % poly.size()];
+        if (a.x == b.x && a.y == b.y) continue;
+        if (b.x < a.x) std::swap(a, b);
+        segs.push_back({a, b});
+      }
+    const std::vector<P2>& img = polys.front();
+    mpq_class lo = img[0].x, hi = img[0].x;
+    for (const auto& v : img) lo = std::min(lo, v.x), hi = std::max(hi, v.x);
+    std::vector<mpq_class> xs{lo, hi};
+    for (const auto& s : segs) {
+      if (s.a.x > lo && s.a.x < hi) xs.push_back(s.a.x);
+      if (s.b.x > lo && s.b.x < hi) xs.push_back(s.b.x);
+    }
+    for (std::size_t a = 0; a < segs.size(); ++a)
+      for (std::size_t b = a + 1; b < segs.size(); ++b) {
+        const Seg2 &s = segs[a], &r = segs[b];
+        const mpq_class dx1 = s.b.x - s.a.x, dy1 = s.b.y - s.a.y, dx2 = r.b.x - r.a.x, dy2 = r.b.y - r.a.y;
+        const mpq_class den = dx1 * dy2 - dy1 * dx2;
+        if (den == 0) continue;
+        const mpq_class uu = ((r.a.x - s.a.x) * dy2 - (r.a.y - s.a.y) * dx2) / den;
+        const mpq_class vv = ((r.a.x - s.a.x) * dy1 - (r.a.y - s.a.y) * dx1) / den;
+        if (uu < 0 || uu > 1 || vv < 0 || vv > 1) continue;
+        const mpq_class x = s.a.x + uu * dx1;
+        if (x > lo && x < hi) xs.push_back(x);
+      }
+    std::sort(xs.begin(), xs.end());
+    xs.erase(std::unique(xs.begin(), xs.end()), xs.end());
+    bool visible = false;
+    for (std::size_t j = 0; j + 1 < xs.size() && !visible; ++j) {
+      const mpq_class xm = (xs[j] + xs[j + 1]) / 2;
+      std::vector<mpq_class> ys;
+      for (const auto& s : segs)
+        if (s.a.x < xm && xm < s.b.x) ys.push_back(y_at(s, xm));
+      std::sort(ys.begin(), ys.end());
+      ys.erase(std::unique(ys.begin(), ys.end()), ys.end());
+      for (std::size_t m = 0; m + 1 < ys.size() && !visible; ++m) {
+        const P2 q{xm, (ys[m] + ys[m + 1]) / 2};
+        if (!in_convex(img, q)) continue;
+        bool hidden = false;
+        for (std::size_t s = 1; s < polys.size() && !hidden; ++s) hidden = in_convex(polys[s], q);
+        visible = !hidden;
+      }
+    }
+    if (visible) seen.push_back(static_cast<int>(t));
+  }
+  return seen;
+}
+
+}  // namespace oracle

@@ -34,6 +34,14 @@ std::vector<int> convex_point_aspect(const std::vector<OTriangle>& model, const 
 // crosses no edge, so its points are all seen or all hidden. Two-sided triangles; edge-on ones have no image.
 std::vector<int> direction_aspect(const std::vector<OTriangle>& model, const QVec& d);
 
+// Any model whose triangles meet only in shared corners and edges: the triangles seen with positive measure
+// from the point p (not on any triangle), by a method of its own: for each triangle t with p off its plane,
+// every other triangle is clipped exactly to the pyramid conv(p, t) and projected centrally from p onto t's
+// plane (its shadow there, a convex polygon); t is seen iff a sample point strictly inside t, taken in every
+// trapezoid of the vertical-slab decomposition of t's and the shadows' edges, lies in no shadow. (The hidden
+// part of t is the union of the shadows up to their boundaries, a null set; a trapezoid crosses no edge.)
+std::vector<int> point_aspect(const std::vector<OTriangle>& model, const QVec& p);
+
 struct GreatCircleCounts {
   std::int64_t circles = 0, vertices = 0, arcs = 0, faces = 0;
   bool simple = true;
