@@ -4,11 +4,15 @@
 // shared: CPU seconds are the fairer figure).
 //
 // Usage: bench_pvs [--kinds town,forest] [--sizes 1000,10000] [--threads 1,2] [--baseline-max N]
-//                  [--methods pvs-flat,pvs-box,pvs]
+//                  [--methods pvs-flat,pvs-box,pvs-novirt,pvs] [--cap N]
 //   --baseline-max: run the per-triangle loop only for scenes of at most N triangles (default 10000).
 //   --methods: which PVS rows to run (default all): pvs-flat = rays + one exact query per triangle (no
-//   hierarchy, no single-occluder proofs); pvs-box = with the hierarchy's exact hidden-box tests only; pvs =
-//   the default of `exactvis pvs` (single wall / convex solid proofs first, then box tests, rays, queries).
+//   hierarchy, no single-occluder proofs); pvs-box = with the hierarchy's exact hidden-box tests only;
+//   pvs-novirt = hierarchy with single wall / convex solid proofs first, then box tests, rays, queries, but
+//   no virtual occluders (the traversal before issue #11's front-to-back step); pvs = the default of
+//   `exactvis pvs`: the same front to back with boxes proved hidden as virtual occluders (at most --cap,
+//   default 32). Columns: culled = triangles proved hidden without their own query; by_occl = of those by
+//   one wall / solid; by_virt = by a virtual occluder; boxes = exact hidden-box tests run.
 #include "bench/bench_util.hpp"
 #include "kernel/scene_generators.hpp"
 #include "region/cell_visibility.hpp"
@@ -39,8 +43,9 @@ Timing timed(F&& f) {
 
 int main(int argc, char** argv) {
   std::vector<std::string> kinds{"town", "forest"}, sizes{"1000", "10000"}, threads{"1", "2"},
-      methods{"pvs-flat", "pvs-box", "pvs"};
+      methods{"pvs-flat", "pvs-box", "pvs-novirt", "pvs"};
   long baseline_max = 10000;
+  int cap = 32;
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string a = argv[i];
     if (a == "--kinds") kinds = bench::split(argv[i + 1]);
@@ -48,9 +53,10 @@ int main(int argc, char** argv) {
     else if (a == "--threads") threads = bench::split(argv[i + 1]);
     else if (a == "--baseline-max") baseline_max = std::stol(argv[i + 1]);
     else if (a == "--methods") methods = bench::split(argv[i + 1]);
+    else if (a == "--cap") cap = std::stoi(argv[i + 1]);
   }
-  std::printf("%-7s %8s %3s %-14s %8s %8s %8s %10s %8s %8s %8s %8s\n", "scene", "tris", "thr", "method", "wall_s",
-              "cpu_s", "pvs", "tris/cpu_s", "culled", "by_occl", "queries", "ratio");
+  std::printf("%-7s %8s %3s %-14s %8s %8s %8s %10s %8s %8s %8s %8s %8s %8s\n", "scene", "tris", "thr", "method",
+              "wall_s", "cpu_s", "pvs", "tris/cpu_s", "culled", "by_occl", "by_virt", "boxes", "queries", "ratio");
   for (const auto& kind : kinds)
     for (const auto& size : sizes) {
       const Scene scene = generate_scene(kind, std::stol(size), 1);
@@ -71,22 +77,25 @@ int main(int argc, char** argv) {
           region::CellVisibility cv;
           const Timing tm = timed([&] { cv = region::visibility_from_source(scene, context.index(), {cell, {}}, all, co); });
           baseline_cpu = tm.cpu;
-          std::printf("%-7s %8.0f %3d %-14s %8.2f %8.2f %8lld %10.1f %8s %8s %8.0f %8s\n", kind.c_str(), n, t,
-                      "per-triangle", tm.wall, tm.cpu, static_cast<long long>(cv.visible), n / tm.cpu, "-", "-", n, "1.00");
+          std::printf("%-7s %8.0f %3d %-14s %8.2f %8.2f %8lld %10.1f %8s %8s %8s %8s %8.0f %8s\n", kind.c_str(), n, t,
+                      "per-triangle", tm.wall, tm.cpu, static_cast<long long>(cv.visible), n / tm.cpu, "-", "-", "-", "-",
+                      n, "1.00");
         }
-        for (const std::string method : {"pvs-flat", "pvs-box", "pvs"}) {
+        for (const std::string method : {"pvs-flat", "pvs-box", "pvs-novirt", "pvs"}) {
           if (std::find(methods.begin(), methods.end(), method) == methods.end()) continue;
           region::PvsOptions po;
           po.threads = t;
           po.hierarchy = method != "pvs-flat";
-          po.occluder_proofs = method == "pvs";
+          po.occluder_proofs = method == "pvs" || method == "pvs-novirt";
+          po.virtual_occluders = method == "pvs" ? cap : 0;
           region::CellPvs pvs;
           const Timing tm = timed([&] { pvs = region::exact_cell_pvs(context, cell, po); });
           char ratio[32] = "-";
           if (baseline_cpu > 0) std::snprintf(ratio, sizeof ratio, "%.2f", baseline_cpu / tm.cpu);
-          std::printf("%-7s %8.0f %3d %-14s %8.2f %8.2f %8lld %10.1f %8lld %8lld %8lld %8s\n", kind.c_str(), n, t,
-                      method.c_str(), tm.wall, tm.cpu, static_cast<long long>(pvs.stats.visible), n / tm.cpu,
+          std::printf("%-7s %8.0f %3d %-14s %8.2f %8.2f %8lld %10.1f %8lld %8lld %8lld %8lld %8lld %8s\n", kind.c_str(),
+                      n, t, method.c_str(), tm.wall, tm.cpu, static_cast<long long>(pvs.stats.visible), n / tm.cpu,
                       static_cast<long long>(pvs.stats.culled), static_cast<long long>(pvs.stats.culled_by_occluders),
+                      static_cast<long long>(pvs.stats.culled_by_virtual), static_cast<long long>(pvs.stats.boxes_tested),
                       static_cast<long long>(pvs.stats.exact_queries), ratio);
           std::fflush(stdout);
           if (baseline_cpu == 0) baseline_cpu = tm.cpu;  // no per-triangle row: ratios to the first PVS row

@@ -68,6 +68,9 @@ struct PvsOptions {
   int min_cull = 16;        // hidden-box tests only for nodes of at least this many triangles
   bool occluder_proofs = true;  // method `exact`: try the single wall / convex solid proofs of method
                                 // `conservative` (region/single_occluder_culling.hpp) before the line-space tests
+  int virtual_occluders = 32;   // method `exact` with the hierarchy: at most this many boxes proved hidden are
+                                // kept as virtual occluders for what lies behind (region/virtual_occluders.hpp);
+                                // 0: none (each node decided on its own, as before)
   // Called with the number of triangles decided so far in the current cell (thread-safe callers only:
   // it is called from the worker threads), e.g. for a progress bar. May be empty.
   std::function<void(std::int64_t decided)> on_progress;
@@ -90,6 +93,10 @@ struct CellPvsStats {
   std::int64_t culled_by_occluders = 0;  // of those, by one wall or one convex solid (not in JSON files)
   std::int64_t boxes_tested = 0;       // exact hidden-box tests run
   std::int64_t boxes_culled = 0;       // boxes proved hidden
+  std::int64_t culled_by_virtual = 0;  // triangles culled by a virtual occluder (a box proved hidden before;
+                                       // not in JSON files)
+  std::int64_t virtual_occluders = 0;  // boxes registered as virtual occluders (before the cap; not in JSON)
+  std::int64_t virtual_tests = 0;      // exact virtual-occluder tests run (not in JSON files)
   std::int64_t rays_cast = 0;          // method `sampled`: random rays cast from the cell
   VisibilityStats query;               // accumulated over the exact queries (exact_evaluations left at 0)
   double seconds = 0;                  // wall-clock time (for benchmarks; not written to JSON files)

@@ -5,12 +5,16 @@
 #include "region/from_region_visibility.hpp"
 #include "region/ray_witness.hpp"
 #include "region/single_occluder_culling.hpp"
+#include "region/virtual_occluders.hpp"
 #include "util/for_each_index.hpp"
 #include "util/mix_seed.hpp"
 
 #include <tbb/parallel_invoke.h>
 #include <tbb/task_arena.h>
+#include <tbb/task_group.h>
 
+#include <algorithm>
+#include <array>
 #include <atomic>
 #include <functional>
 #include <glm/vec3.hpp>
@@ -126,23 +130,67 @@ CellPvs exact_cell_pvs(const PvsContext& context, const RationalBox3& cell, cons
     const std::int64_t d = decided.fetch_add(node.end - node.begin) + (node.end - node.begin);
     if (options.on_progress) options.on_progress(d);
   };
+  // Front to back from the cell, on this thread only, so that the virtual occluders (boxes proved hidden
+  // so far, docs/theory.md §5.8) and every counter are the same for any thread count; the triangles of the
+  // leaves are decided by tasks on the other cores meanwhile (they do not feed back into the traversal).
+  VirtualOccluders dark(cell, options.virtual_occluders);
+  const Point3 cell_centre{approx.lo.x / 2 + approx.hi.x / 2, approx.lo.y / 2 + approx.hi.y / 2,
+                           approx.lo.z / 2 + approx.hi.z / 2};
+  auto gap = [&](const Box3& b) {  // squared distance from the cell's centre to the box (ordering only)
+    double s = 0;
+    for (int k = 0; k < 3; ++k) {
+      const double g = std::max({b.lo[k] - cell_centre[k], cell_centre[k] - b.hi[k], 0.0});
+      s += g * g;
+    }
+    return s;
+  };
+  tbb::task_group leaves;
   std::function<void(int, std::ptrdiff_t)> visit = [&](int index, std::ptrdiff_t hint) {
     const BvhNode& node = bvh.nodes[index];
-    if (use_proofs && node.end - node.begin > 1 && proofs->hides_node(node, hint)) return cull(node, 2);
-    if (box_hidden(index)) return cull(node, 1);
+    if (dark.blocks(corners_of(node.box))) return cull(node, 3);
+    // A box proved hidden by a wall, a solid or the line-space test becomes a virtual occluder (one blocked
+    // by a virtual occluder does not: its shadow lies inside that occluder's).
+    if (use_proofs && node.end - node.begin > 1 && proofs->hides_node(node, hint)) {
+      dark.add(node.box);
+      return cull(node, 2);
+    }
+    if (box_hidden(index)) {
+      dark.add(node.box);
+      return cull(node, 1);
+    }
     if (node.left < 0) {
-      for (int i = node.begin; i < node.end; ++i) decide(static_cast<std::size_t>(bvh.order[i]), use_proofs ? &hint : nullptr);
+      std::vector<std::size_t> open;
+      for (int i = node.begin; i < node.end; ++i) {
+        const std::int64_t t = bvh.order[i];
+        const SceneTriangle& tri = scene.triangles[t];
+        const std::array<Point3, 3> corners{scene.corner(tri, 0), scene.corner(tri, 1), scene.corner(tri, 2)};
+        if (dark.blocks(corners)) {
+          culled[t] = 3;
+          const std::int64_t d = decided.fetch_add(1) + 1;
+          if (options.on_progress) options.on_progress(d);
+        } else {
+          open.push_back(static_cast<std::size_t>(t));
+        }
+      }
+      auto run = [&decide, use_proofs, open = std::move(open), hint] {
+        std::ptrdiff_t h = hint;  // the leaf's own copy, as in the sequential order
+        for (const std::size_t t : open) decide(t, use_proofs ? &h : nullptr);
+      };
+      if (options.threads == 1) run();
+      else leaves.run(std::move(run));
       return;
     }
-    if (options.threads == 1) {
-      visit(node.left, hint);
-      visit(node.right, hint);
-    } else {
-      tbb::parallel_invoke([&] { visit(node.left, hint); }, [&] { visit(node.right, hint); });
-    }
+    // Nearer child first: what it proves hidden shadows the farther one.
+    const bool swap = gap(bvh.nodes[node.right].box) < gap(bvh.nodes[node.left].box);
+    visit(swap ? node.right : node.left, hint);
+    visit(swap ? node.left : node.right, hint);
   };
   tbb::task_arena arena(options.threads > 0 ? options.threads : tbb::task_arena::automatic);
-  if (options.hierarchy && !bvh.nodes.empty()) arena.execute([&] { visit(0, -1); });
+  if (options.hierarchy && !bvh.nodes.empty())
+    arena.execute([&] {
+      visit(0, -1);
+      leaves.wait();
+    });
   else
     arena.execute([&] {
       for_each_index(n, options.threads != 1, 4, [&](std::size_t i) {
@@ -158,6 +206,7 @@ CellPvs exact_cell_pvs(const PvsContext& context, const RationalBox3& cell, cons
     const TriangleAnswer& a = answers[i];
     if (culled[i] || a.by_occluder) ++out.stats.culled;
     if (culled[i] == 2 || a.by_occluder) ++out.stats.culled_by_occluders;
+    if (culled[i] == 3) ++out.stats.culled_by_virtual;
     if (culled[i] || a.by_occluder) continue;
     if (a.by_rays) ++out.stats.accepted_by_rays;
     else {
@@ -169,6 +218,8 @@ CellPvs exact_cell_pvs(const PvsContext& context, const RationalBox3& cell, cons
   out.stats.visible = static_cast<std::int64_t>(out.visible.size());
   out.stats.boxes_tested = boxes_tested;
   out.stats.boxes_culled = boxes_culled;
+  out.stats.virtual_occluders = dark.added();
+  out.stats.virtual_tests = dark.exact_tests();
   accumulate(out.stats.query, box_stats);
   out.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;
