@@ -6,8 +6,11 @@
 // process CPU seconds (the machine may be shared: CPU seconds are the fairer figure).
 //
 // Usage: bench_pvs_methods [--kinds town,forest] [--sizes 2000,10000] [--threads 2] [--exact-max N]
+//                          [--rays R] [--scan-max M]
 //   --exact-max: run exact (and sampled at equal time) only up to N triangles (default 10000); above it, only
-//   conservative and sampled with --rays (default 10^6) are timed.
+//   conservative and sampled with --rays (default 10^6; 0: no sampled row) are timed.
+//   --scan-max: also time conservative with the scan over all occluders (OccluderSearch::scan, the reference
+//   of the 2D footprint grid) up to M triangles (default 0: not run); its PVS must equal the grid's.
 #include "bench/bench_util.hpp"
 #include "kernel/scene_generators.hpp"
 #include "region/conservative_pvs.hpp"
@@ -48,6 +51,7 @@ int main(int argc, char** argv) {
   int threads = 2;
   long exact_max = 10000;
   std::int64_t rays = 1000000;
+  long scan_max = 0;
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string a = argv[i];
     if (a == "--kinds") kinds = bench::split(argv[i + 1]);
@@ -55,6 +59,7 @@ int main(int argc, char** argv) {
     else if (a == "--threads") threads = std::stoi(argv[i + 1]);
     else if (a == "--exact-max") exact_max = std::stol(argv[i + 1]);
     else if (a == "--rays") rays = std::stoll(argv[i + 1]);
+    else if (a == "--scan-max") scan_max = std::stol(argv[i + 1]);
   }
   std::printf("%-7s %8s %-13s %9s %9s %7s %9s %10s %9s\n", "scene", "tris", "method", "wall_s", "cpu_s", "pvs",
               "vs_exact", "rays", "errors");
@@ -96,6 +101,16 @@ int main(int argc, char** argv) {
         errors = std::to_string(misses) + " miss";
       }
       row("conservative", t_cons, cons.stats.visible, vs, 0, errors);
+      if (static_cast<long>(n) <= scan_max) {
+        region::CellPvs scan;
+        const Timing t_scan = timed([&] { scan = region::conservative_cell_pvs(context, cell, po, region::OccluderSearch::scan); });
+        bool same = scan.visible.size() == cons.visible.size();
+        for (std::size_t i = 0; same && i < scan.visible.size(); ++i) same = scan.visible[i].index == cons.visible[i].index;
+        char buf[48];
+        std::snprintf(buf, sizeof buf, "grid %.1fx", t_scan.cpu / std::max(1e-6, t_cons.cpu));
+        row("cons.scan", t_scan, scan.stats.visible, buf, 0, same ? "same" : "DIFFERENT!");
+      }
+      if (!with_exact && rays == 0) continue;
       // Sampled: calibrate the ray rate, then (with exact) as many rays as exact's time allows.
       region::PvsOptions so = po;
       so.cell_rays = 100000;

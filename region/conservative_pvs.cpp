@@ -13,14 +13,15 @@
 
 namespace exactvis::region {
 
-CellPvs conservative_cell_pvs(const PvsContext& context, const RationalBox3& cell, const PvsOptions& options) {
+CellPvs conservative_cell_pvs(const PvsContext& context, const RationalBox3& cell, const PvsOptions& options,
+                              OccluderSearch search) {
   check_view_cell(cell);
   check_thread_count(options.threads);
   const auto start = std::chrono::steady_clock::now();
   const Scene& scene = context.scene();
   const std::size_t n = scene.triangles.size();
   // The wall and solid proofs (region/single_occluder_culling.hpp), prepared once for this cell.
-  const SingleOccluderCulling proofs(context, cell);
+  const SingleOccluderCulling proofs(context, cell, search);
   std::atomic<std::int64_t> nodes_tested{0}, nodes_hidden{0};
 
   std::vector<char> culled(n, 0);

@@ -20,6 +20,7 @@
 //   tried in 2.5D scenes too (after the walls); cells carry no view frustum, so there is no frustum culling.
 // Floats only choose which wall to try (a double version of the test); each proof is exact.
 #include "region/cell_pvs.hpp"
+#include "region/single_occluder_culling.hpp"
 
 namespace exactvis::region {
 
@@ -29,7 +30,12 @@ namespace exactvis::region {
 // exact wall and solid tests run (each proposed by a double test), stats.visible = listed. Deterministic
 // (answers and counters do not depend on the thread count). Cost: per tested node or triangle, one double
 // test per wall and per solid whose box the cell-to-target segment passes: O((nodes + n) * (walls +
-// solids)) double tests in the worst case, plus one exact test per proposal.
-CellPvs conservative_cell_pvs(const PvsContext& context, const RationalBox3& cell, const PvsOptions& options);
+// solids)) double tests in the worst case (scan; the grid tests only the walls near each target's shaft),
+// plus one exact test per proposal.
+// `search` chooses how candidate occluders are found (region/single_occluder_culling.hpp: the 2D grid, or the
+// scan of all, the reference with the same answers); with the grid a target's tests cover only the walls
+// near its cell-to-target hull's top view and the solids near its centre segment.
+CellPvs conservative_cell_pvs(const PvsContext& context, const RationalBox3& cell, const PvsOptions& options,
+                              OccluderSearch search = OccluderSearch::grid);
 
 }  // namespace exactvis::region

@@ -54,8 +54,8 @@ Point3 centre(const Box3& b) { return {0.5 * (b.lo.x + b.hi.x), 0.5 * (b.lo.y + 
 
 }  // namespace
 
-SingleOccluderCulling::SingleOccluderCulling(const PvsContext& context, const RationalBox3& cell)
-    : context_(context), cell_(cell), approx_(approximate_box(cell)) {
+SingleOccluderCulling::SingleOccluderCulling(const PvsContext& context, const RationalBox3& cell, OccluderSearch search)
+    : context_(context), cell_(cell), approx_(approximate_box(cell)), search_(search) {
   const std::vector<WallRectangle>& walls = context.extruded().walls;
   // The walls that can hide anything from this cell (cell strictly on one side, spanning its heights),
   // nearest first: a near wall has the widest umbra.
@@ -96,6 +96,17 @@ SingleOccluderCulling::SingleOccluderCulling(const PvsContext& context, const Ra
       return std::min(distance[x.first], distance[x.second]) < std::min(distance[y.first], distance[y.second]);
     });
   }
+  if (search_ == OccluderSearch::grid) {
+    partners_.resize(walls.size());
+    for (const auto& [w, u] : corner_pairs_) partners_[w].push_back(u), partners_[u].push_back(w);
+    std::vector<Box3> footprints;
+    footprints.reserve(usable_walls_.size());
+    for (const std::size_t w : usable_walls_) {
+      const WallRectangle& r = walls[w];
+      footprints.push_back({{std::min(r.ax, r.bx), std::min(r.ay, r.by), r.z_lo}, {std::max(r.ax, r.bx), std::max(r.ay, r.by), r.z_hi}});
+    }
+    wall_grid_ = FootprintGrid(footprints);
+  }
 
   // The closed convex solids strictly apart from the cell, nearest first. solid_blocks_box_pair itself proves
   // both boxes disjoint from the closed solid (so the segment meets the surface inside, never only at its end
@@ -111,6 +122,19 @@ SingleOccluderCulling::SingleOccluderCulling(const PvsContext& context, const Ra
   };
   std::stable_sort(usable_solids_.begin(), usable_solids_.end(),
                    [&](std::size_t a, std::size_t b) { return box_distance(a) < box_distance(b); });
+  if (search_ == OccluderSearch::grid) {
+    std::vector<Box3> boxes;
+    boxes.reserve(usable_solids_.size());
+    for (const std::size_t k : usable_solids_) boxes.push_back(solids[k].box);
+    solid_grid_ = FootprintGrid(boxes);
+  }
+}
+
+bool SingleOccluderCulling::try_pair(std::size_t w, std::size_t u, const UmbraTarget& target) const {
+  const std::vector<WallRectangle>& walls = context_.extruded().walls;
+  if (!wall_pair_may_hide(walls[w], prepared_[w], walls[u], prepared_[u], approx_, target)) return false;
+  exact_tests_.fetch_add(1, std::memory_order_relaxed);
+  return wall_pair_hides_exactly(walls[w], walls[u], cell_, target);
 }
 
 template <class Owns>
@@ -123,29 +147,59 @@ bool SingleOccluderCulling::hides(const UmbraTarget& target, const Box3& target_
     return wall_hides_exactly(walls[w], cell_, target);
   };
   if (hint >= 0 && attempt(static_cast<std::size_t>(hint))) return true;
-  for (const std::size_t w : usable_walls_)
-    if (static_cast<std::ptrdiff_t>(w) != hint && attempt(w)) {
-      hint = static_cast<std::ptrdiff_t>(w);
+  const Point3 cell_centre = centre(approx_), target_centre = centre(target_box);
+  if (search_ == OccluderSearch::scan) {
+    for (const std::size_t w : usable_walls_)
+      if (static_cast<std::ptrdiff_t>(w) != hint && attempt(w)) {
+        hint = static_cast<std::ptrdiff_t>(w);
+        return true;
+      }
+    for (const auto& [w, u] : corner_pairs_)
+      if (try_pair(w, u, target)) return true;
+  } else if (!usable_walls_.empty()) {
+    // Only walls whose footprint meets the top view of conv(cell's footprint ∪ target points) can pass
+    // condition (ii) (every corner-to-point segment lies in that hull); the grid lists at least those.
+    std::vector<XyPoint> hull{{approx_.lo.x, approx_.lo.y}, {approx_.hi.x, approx_.lo.y}, {approx_.lo.x, approx_.hi.y}, {approx_.hi.x, approx_.hi.y}};
+    for (const Point3& p : target.points) hull.push_back({p.x, p.y});
+    std::vector<std::size_t> tried;
+    std::size_t proved = 0;
+    if (wall_grid_.visit_hull(hull, {cell_centre.x, cell_centre.y}, [&](std::size_t k) {
+          const std::size_t w = usable_walls_[k];
+          tried.push_back(w);
+          if (static_cast<std::ptrdiff_t>(w) == hint || !attempt(w)) return false;
+          proved = w;
+          return true;
+        })) {
+      hint = static_cast<std::ptrdiff_t>(proved);
       return true;
     }
-  for (const auto& [w, u] : corner_pairs_) {
-    if (!wall_pair_may_hide(walls[w], prepared_[w], walls[u], prepared_[u], approx_, target)) continue;
-    exact_tests_.fetch_add(1, std::memory_order_relaxed);
-    if (wall_pair_hides_exactly(walls[w], walls[u], cell_, target)) return true;
+    // A pair with neither wall listed cannot pass (ii'): no corner-to-point segment meets either footprint.
+    // Every pair with a listed wall is tried, once (both listed: from the smaller wall index).
+    std::vector<std::size_t> listed(tried);
+    std::sort(listed.begin(), listed.end());
+    for (const std::size_t w : tried)
+      for (const std::size_t u : partners_[w])
+        if ((u > w || !std::binary_search(listed.begin(), listed.end(), u)) && try_pair(w, u, target)) return true;
   }
   if (usable_solids_.empty()) return false;
   const std::vector<ConvexSolid>& solids = context_.solids();
-  const Point3 cell_centre = centre(approx_), target_centre = centre(target_box);
   std::optional<RationalBox3> exact_target;
-  for (const std::size_t k : usable_solids_) {
+  auto try_solid = [&](std::size_t k) {
     const ConvexSolid& solid = solids[k];
-    if (!segment_near_box(cell_centre, target_centre, solid.box)) continue;
+    if (!segment_near_box(cell_centre, target_centre, solid.box)) return false;
     if (!exact_target) exact_target = exact_box(target_box);
-    if (!strictly_apart(*exact_target, solid) || owns_triangle_of(solid)) continue;
+    if (!strictly_apart(*exact_target, solid) || owns_triangle_of(solid)) return false;
     exact_tests_.fetch_add(1, std::memory_order_relaxed);
-    if (solid_blocks_box_pair(solid, cell_, *exact_target)) return true;
+    return solid_blocks_box_pair(solid, cell_, *exact_target);
+  };
+  if (search_ == OccluderSearch::scan) {
+    for (const std::size_t k : usable_solids_)
+      if (try_solid(k)) return true;
+    return false;
   }
-  return false;
+  // segment_near_box needs the solid's box to meet the centre segment, hence its xy box the segment's top view.
+  return solid_grid_.visit_hull({{cell_centre.x, cell_centre.y}, {target_centre.x, target_centre.y}},
+                                {cell_centre.x, cell_centre.y}, [&](std::size_t k) { return try_solid(usable_solids_[k]); });
 }
 
 bool SingleOccluderCulling::hides_triangle(std::int64_t triangle, std::ptrdiff_t& hint) const {
