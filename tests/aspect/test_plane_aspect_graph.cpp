@@ -156,6 +156,21 @@ TEST(PlaneAspectGraph, NotchedBoxHandCount) {
   check(s, g);
 }
 
+// Degenerate planes: through the models' horizontal faces (the bottom, the top, the notch floor), where those
+// faces are seen edge-on and the viewpoints on them are on the solid (not viewpoints): every cell and random
+// point against the oracle.
+TEST(PlaneAspectGraph, PlanesThroughHorizontalFaces) {
+  for (const Exact h : {Exact(0), Exact(1)}) {
+    SCOPED_TRACE(h);
+    check(l_prism(), graph(l_prism(), h), 2000, 100);
+    check(two_boxes(), graph(two_boxes(), h), 2000, 100);
+  }
+  for (const Exact h : {Exact(0), Exact(1), Exact(2)}) {
+    SCOPED_TRACE(h);
+    check(notched_box(), graph(notched_box(), h), 2000, 100);
+  }
+}
+
 // A convex model through this path gives the convex path's regions (same aspects, same count).
 TEST(PlaneAspectGraph, ConvexModelsAgreeWithTheConvexPath) {
   for (const Scene& s : {aspect_test::cube(), tetrahedron(), random_convex(3, 8, 6)}) {
