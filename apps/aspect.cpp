@@ -82,7 +82,8 @@ std::string summary(const AspectGraph3& g, const std::string& what) {
   s += ortho ? "sphere cells " + std::to_string(g.cells[0]) + " vertices, " + std::to_string(g.cells[1]) + " arcs, " +
                    std::to_string(g.cells[2]) + " faces"
              : std::string(plane ? "cells of the plane" : "cells") + " outside the model " + std::to_string(g.cells[0]) + " vertices, " + std::to_string(g.cells[1]) +
-                   " edges, " + std::to_string(g.cells[2]) + " faces, " + std::to_string(g.cells[3]) + " volumes";
+                   " edges, " + std::to_string(g.cells[2]) + " faces" +
+                   (plane ? std::string() : ", " + std::to_string(g.cells[3]) + " volumes");
   return s;
 }
 
@@ -145,16 +146,20 @@ std::vector<PngPanel> png_panels(const Scene& scene, const std::vector<int>& val
 // Cost warning before the work (docs/cli.md): time scaled from docs/performance.md (bench_aspect: convex
 // models 3.9 CPU s for 186 face planes orthographic, growth below m^3; 7.7 s for 62 planes perspective, below
 // m^4; non-convex closed solids 41 CPU s for 988 great circles, about 4 m^2 cells at 10 us each).
+// Non-convex models on a plane (trace lines): 14.9 CPU s for 324 lines (docs/performance.md), O(m^2) cells at O(m) each.
 std::string cost_warning(std::size_t m, ViewModel view, const char* what = "face planes") {
-  const bool ortho = view == ViewModel::Orthographic, circles = std::string(what) == "great circles";
+  const bool ortho = view == ViewModel::Orthographic, circles = std::string(what) == "great circles",
+             lines = std::string(what) == "trace lines";
   const double seconds = circles ? 41.0 * std::pow(m / 988.0, 2)
+                         : lines ? 14.9 * std::pow(m / 324.0, 3)
                                  : (ortho ? 3.9 * std::pow(m / 186.0, 3) : 7.7 * std::pow(m / 62.0, 4));
   if (seconds < 60) return "";
   std::ostringstream w;
   w.precision(2);
-  w << "aspect: warning: " << m << " " << what << ": the " << (ortho ? "orthographic" : "perspective")
-    << " arrangement has O(m^" << (ortho ? 2 : 3) << ") cells at " << (circles ? "O(1)" : "O(m)")
-    << " each; roughly " << seconds << " s (scaled from docs/performance.md)";
+  w << "aspect: warning: " << m << " " << what << ": the "
+    << (ortho ? "orthographic" : (lines ? "plane's" : "perspective")) << " arrangement has O(m^"
+    << (ortho || lines ? 2 : 3) << ") cells at " << (circles ? "O(1)" : "O(m)") << " each; roughly " << seconds
+    << " s (scaled from docs/performance.md)";
   return w.str();
 }
 
@@ -206,6 +211,8 @@ int run_general_plane(const AspectOptions& o, const Scene& scene, const Exact& h
   const ClosedSolidFronts fronts = closed_solid_fronts(scene);
   if (!fronts.ok) throw InputError(label + ": " + fronts.problem);
   const std::size_t lines = plane_aspect_lines(scene, fronts, height);
+  if (const std::string w = cost_warning(lines, ViewModel::Plane, "trace lines"); !w.empty() && !o.quiet)
+    std::cerr << w << std::endl;
   const bool pictures = !o.vtp.empty() || !o.png.empty();
   const AspectGraph3 g = [&] {
     app::FractionProgress bar("aspect: arrangement", app::progress_wanted(o.quiet));

@@ -23,12 +23,34 @@ namespace {
 
 using ExactKey = std::array<Exact, 3>;
 
-// A half-plane of Q: g(x, y) = A x + B y + C >= 0, the trace of alpha . p >= beta on z = H.
+// A half-plane of Q: g(x, y) = A x + B y + C >= 0.
 struct Half {
   Exact A, B, C;
 };
 
-Half trace(const Vec3<Exact>& alpha, const Exact& beta, const Exact& H) { return {alpha.x, alpha.y, alpha.z * H - beta}; }
+// The chart of Q = {n . p = offset}: the parameters (x, y) are the coordinates i, j of p, the dominant axis
+// k of n solved for (z = H: x, y themselves).
+struct Chart {
+  Vec3<Exact> n;
+  Exact offset;
+  int i = 0, j = 1, k = 2;
+  Chart(const Vec3<Exact>& normal, const Exact& off) : n(normal), offset(off) {
+    for (int c = 0; c < 3; ++c)
+      if (CGAL::abs(n[c]) > CGAL::abs(n[k])) k = c;
+    i = (k + 1) % 3, j = (k + 2) % 3;
+    if (i > j) std::swap(i, j);
+  }
+  Vec3<Exact> point(const Exact& x, const Exact& y) const {
+    Vec3<Exact> p(0, 0, 0);
+    p[i] = x, p[j] = y, p[k] = (offset - n[i] * x - n[j] * y) / n[k];
+    return p;
+  }
+  // The trace of alpha . p >= beta: alpha . point(x, y) - beta, affine in (x, y).
+  Half trace(const Vec3<Exact>& alpha, const Exact& beta) const {
+    const Exact r = alpha[k] / n[k];
+    return {alpha[i] - r * n[i], alpha[j] - r * n[j], r * offset - beta};
+  }
+};
 Exact value(const Half& g, const Exact& x, const Exact& y) { return g.A * x + g.B * y + g.C; }
 bool constant(const Half& g) { return g.A == 0 && g.B == 0; }
 
@@ -149,7 +171,7 @@ struct Setup {
   }
 };
 
-Setup setup(const Scene& scene, const ClosedSolidFronts& fronts, const Exact& H) {
+Setup setup(const Scene& scene, const ClosedSolidFronts& fronts, const Chart& Q) {
   if (!fronts.ok) throw std::invalid_argument("plane_aspect_graph: the fronts were rejected: " + fronts.problem);
   const std::size_t n = scene.triangles.size();
   std::set<std::pair<int, int>> edge_set;
@@ -165,7 +187,7 @@ Setup setup(const Scene& scene, const ClosedSolidFronts& fronts, const Exact& H)
     const auto& t = scene.triangles[i];
     PerTriangle& r = per[i];
     const Vec3<Exact>& nt = fronts.fronts[i].outward;
-    r.face = trace(nt, dot(nt, vx[t.v[0]]), H);  // closure of the outer side
+    r.face = Q.trace(nt, dot(nt, vx[t.v[0]]));  // closure of the outer side
     if (constant(r.face) && r.face.C <= 0) return void(r.kind = Kind::Never);
     const auto& P = fronts.fronts[i].points;
     if (P.empty()) return;  // nothing in front: seen from the whole outer side
@@ -193,12 +215,12 @@ Setup setup(const Scene& scene, const ClosedSolidFronts& fronts, const Exact& H)
         }
         if (!supporting || side == 0) continue;
         const Vec3<Exact> alpha = side > 0 ? nv : -nv;
-        cs.push_back(trace(alpha, dot(alpha, a), H));
+        cs.push_back(Q.trace(alpha, dot(alpha, a)));
         origin.push_back({k, u, w, alpha});
       }
       // The facets of P_t facing a: p must be on their inner closed side (beyond P_t, not before it).
       for (const auto& [nv, c] : hull.facets)
-        if (dot(nv, a) > c) cs.push_back(trace(-nv, -c, H)), origin.push_back(Origin{-1, 0, 0, {}});
+        if (dot(nv, a) > c) cs.push_back(Q.trace(-nv, -c)), origin.push_back(Origin{-1, 0, 0, {}});
     }
     if (!free_corner) return void(r.kind = Kind::Never);
     std::vector<std::size_t> kept;
@@ -277,20 +299,36 @@ char sign_char(int s) { return s > 0 ? '+' : (s < 0 ? '-' : '0'); }
 
 }  // namespace
 
+std::size_t plane_aspect_lines(const Scene& scene, const ClosedSolidFronts& fronts, const Vec3<Exact>& normal,
+                               const Exact& offset) {
+  if (normal.x == 0 && normal.y == 0 && normal.z == 0) throw std::invalid_argument("plane_aspect_lines: zero normal");
+  return setup(scene, fronts, Chart(normal, offset)).lines.size();
+}
+
 std::size_t plane_aspect_lines(const Scene& scene, const ClosedSolidFronts& fronts, const Exact& height) {
-  return setup(scene, fronts, height).lines.size();
+  return plane_aspect_lines(scene, fronts, Vec3<Exact>(0, 0, 1), height);
 }
 
 AspectGraph3 plane_aspect_graph(const Scene& scene, const ClosedSolidFronts& fronts, const Exact& height,
                                 void (*progress)(double), bool with_cells) {
-  const Setup s = setup(scene, fronts, height);
+  return plane_aspect_graph(scene, fronts, Vec3<Exact>(0, 0, 1), height, progress, with_cells);
+}
+
+AspectGraph3 plane_aspect_graph(const Scene& scene, const ClosedSolidFronts& fronts, const Vec3<Exact>& normal,
+                                const Exact& offset, void (*progress)(double), bool with_cells) {
+  if (normal.x == 0 && normal.y == 0 && normal.z == 0) throw std::invalid_argument("plane_aspect_graph: zero normal");
+  const Chart Q(normal, offset);
+  const Setup s = setup(scene, fronts, Q);
   const std::size_t L = s.lines.size(), n = scene.triangles.size();
   if (progress) progress(0.1);
 
   // The box [-R, R]^2 holds every crossing of two lines and every line's point nearest the origin strictly
   // inside, so each cell of the line arrangement meets the box in one cell of the clipped arrangement.
   Exact big(1);
-  for (const auto& p : scene.vertices) big = std::max({big, CGAL::abs(Exact(p.x)), CGAL::abs(Exact(p.y))});
+  for (const auto& p : scene.vertices) {
+    const double c[3] = {p.x, p.y, p.z};
+    big = std::max({big, CGAL::abs(Exact(c[Q.i])), CGAL::abs(Exact(c[Q.j]))});
+  }
   for (std::size_t i = 0; i < L; ++i) {
     const ExactKey& a = s.lines[i];
     const Exact nn = a[0] * a[0] + a[1] * a[1];
@@ -422,7 +460,7 @@ AspectGraph3 plane_aspect_graph(const Scene& scene, const ClosedSolidFronts& fro
   out.view = ViewModel::Plane;
   for (int c = 0; c < nc; ++c)
     if (keep[c]) ++out.cells[cells[c].dimension];
-  const auto point = [&](int c) { return Vec3<Exact>(samples[c].first, samples[c].second, height); };
+  const auto point = [&](int c) { return Q.point(samples[c].first, samples[c].second); };
   for (std::size_t r = 0; r < regions.members.size(); ++r) {
     AspectRegion3 region;
     region.dimension = regions.dimension[r];

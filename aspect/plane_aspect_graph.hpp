@@ -32,8 +32,17 @@ namespace exactvis {
 AspectGraph3 plane_aspect_graph(const Scene& scene, const ClosedSolidFronts& fronts, const Exact& height,
                                 void (*progress)(double) = nullptr, bool with_cells = true);
 
-// The number of distinct trace lines the partition of z = H uses; for cost estimates. Cost: the setup of
-// plane_aspect_graph (no arrangement).
+// The same on any plane {normal . p = offset} (normal != 0, else std::invalid_argument): the partition is
+// computed in the chart whose parameters (x, y) are the two coordinates other than normal's dominant axis k
+// (its largest |component|; z, then x on ties), taken in increasing axis order, p_k solved for; `circles` are the trace
+// lines in those parameters, samples are points of the plane. z = H is normal (0, 0, 1), offset H.
+AspectGraph3 plane_aspect_graph(const Scene& scene, const ClosedSolidFronts& fronts, const Vec3<Exact>& normal,
+                                const Exact& offset, void (*progress)(double) = nullptr, bool with_cells = true);
+
+// The number of distinct trace lines the partition of z = H (or of {normal . p = offset}) uses; for cost
+// estimates. Cost: the setup of plane_aspect_graph (no arrangement).
 std::size_t plane_aspect_lines(const Scene& scene, const ClosedSolidFronts& fronts, const Exact& height);
+std::size_t plane_aspect_lines(const Scene& scene, const ClosedSolidFronts& fronts, const Vec3<Exact>& normal,
+                               const Exact& offset);
 
 }  // namespace exactvis

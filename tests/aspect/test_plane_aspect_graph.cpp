@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <map>
+#include <optional>
 #include <random>
 #include <set>
 
@@ -47,7 +48,9 @@ std::vector<std::int64_t> oracle_ids(const Scene& s, const std::vector<oracle::O
 // samples against the oracle; `random_points` random points of the square around the model located in the
 // partition by their sign vector against the trace lines (so a missing line would show as a cell whose
 // aspect is not constant); adjacent regions differ, and each event names only triangles that differ.
-void check(const Scene& s, const AspectGraph3& g, std::size_t max_cells = 2000, int random_points = 200) {
+// `normal` (dominant z) and `offset`: the viewpoint plane when it is not z = H (the chart's parameters are x, y).
+void check(const Scene& s, const AspectGraph3& g, std::size_t max_cells = 2000, int random_points = 100,
+           const Vec3<Exact>& normal = Vec3<Exact>(0, 0, 1), std::optional<Exact> offset = std::nullopt) {
   const auto model = oracle_model(s);
   ASSERT_EQ(g.view, ViewModel::Plane);
   const std::size_t stride = std::max<std::size_t>(1, g.sampled_cells.size() / max_cells);
@@ -64,7 +67,7 @@ void check(const Scene& s, const AspectGraph3& g, std::size_t max_cells = 2000, 
   const double w = std::max(b.hi.x - b.lo.x, b.hi.y - b.lo.y);
   std::mt19937 rng(7);
   std::uniform_int_distribution<int> pick(0, 4096);
-  const Exact h = g.regions.front().sample.z;
+  const Exact off = offset ? *offset : g.regions.front().sample.z;
   for (int i = 0; i < random_points; ++i) {
     const Exact x = Exact(b.lo.x - w) + Exact(3 * w) * Exact(pick(rng), 4096);
     const Exact y = Exact(b.lo.y - w) + Exact(3 * w) * Exact(pick(rng), 4096);
@@ -76,7 +79,8 @@ void check(const Scene& s, const AspectGraph3& g, std::size_t max_cells = 2000, 
     const auto it = region_of.find(signs);
     ASSERT_NE(it, region_of.end()) << "no cell has the sign vector of (" << x << ", " << y << ")";
     if (it->second < 0) continue;
-    EXPECT_EQ(oracle_ids(s, model, {x, y, h}), g.regions[it->second].aspect) << "point (" << x << ", " << y << ")";
+    const Vec3<Exact> p(x, y, (off - normal.x * x - normal.y * y) / normal.z);
+    EXPECT_EQ(oracle_ids(s, model, p), g.regions[it->second].aspect) << "point (" << x << ", " << y << ")";
   }
   for (const auto& a : g.adjacency) {
     const auto& A = g.regions[a.a].aspect;
@@ -154,6 +158,44 @@ TEST(PlaneAspectGraph, NotchedBoxHandCount) {
   EXPECT_EQ(g.regions.size(), 13u);
   EXPECT_EQ(per_dimension(g), (std::array<int, 3>{0, 0, 13}));
   check(s, g);
+}
+
+// Degenerate planes: through the models' horizontal faces (the bottom, the top, the notch floor), where those
+// faces are seen edge-on and the viewpoints on them are on the solid (not viewpoints): every cell and random
+// point against the oracle.
+TEST(PlaneAspectGraph, PlanesThroughHorizontalFaces) {
+  for (const Exact h : {Exact(0), Exact(1)}) {
+    SCOPED_TRACE(h);
+    check(l_prism(), graph(l_prism(), h), 2000, 60);
+    check(two_boxes(), graph(two_boxes(), h), 2000, 60);
+  }
+  for (const Exact h : {Exact(0), Exact(1), Exact(2)}) {
+    SCOPED_TRACE(h);
+    check(notched_box(), graph(notched_box(), h), 2000, 60);
+  }
+}
+
+// Tilted planes {n . p = c} (the chart solves for z): samples on the plane, every cell and random point
+// against the oracle; a convex model agrees with the convex path on the same plane.
+TEST(PlaneAspectGraph, TiltedPlanes) {
+  const Vec3<Exact> n(1, 2, 4);
+  for (const Exact c : {Exact(3), Exact(7, 2)}) {
+    SCOPED_TRACE(c);
+    for (const Scene& s : {l_prism(), notched_box()}) {
+      const ClosedSolidFronts f = closed_solid_fronts(s);
+      const AspectGraph3 g = plane_aspect_graph(s, f, n, c);
+      EXPECT_GT(g.regions.size(), 1u);
+      for (const auto& r : g.regions) EXPECT_EQ(dot(n, r.sample), c);
+      check(s, g, 2000, 60, n, c);
+    }
+  }
+  const Scene cube = aspect_test::cube();
+  const AspectGraph3 g = plane_aspect_graph(cube, closed_solid_fronts(cube), n, Exact(1));
+  const AspectGraph3 c = convex_aspect_graph_on_plane(cube, convex_model(cube), n, Exact(1));
+  std::multiset<std::vector<std::int64_t>> ga, ca;
+  for (const auto& r : g.regions) ga.insert(r.aspect);
+  for (const auto& r : c.regions) ca.insert(r.aspect);
+  EXPECT_EQ(ga, ca);
 }
 
 // A convex model through this path gives the convex path's regions (same aspects, same count).
