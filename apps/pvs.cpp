@@ -1,6 +1,6 @@
 // `exactvis pvs SCENE... (--grid NX,NY,NZ [--box X0,Y0,Z0,X1,Y1,Z1] | --cells cells.json) [--json] [-o FILE]
 //  [--jsonl] [--resume] [--no-witnesses] [--vtp DIR] [--png F [--png-cell K] [--png-size WxH] [--witnesses]]
-//  [--method exact|sampled|conservative] [--shard K/N] [--threads N] [-q]`:
+//  [--method exact|sampled|conservative] [--coherence] [--shard K/N] [--threads N] [-q]`:
 // the exact potentially visible set of every view cell, with a witness per visible triangle (docs/cli.md).
 #include "api/pvs.hpp"
 #include "apps/cli_util.hpp"
@@ -14,6 +14,7 @@
 #include "io/result_pictures.hpp"
 #include "io/view_cells_json.hpp"
 #include "io/write_visibility_vtp.hpp"
+#include "region/exact_pvs.hpp"
 #include "region/pvs_method.hpp"
 #include "util/cells_progress.hpp"
 #include "util/format_number.hpp"
@@ -23,6 +24,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <sstream>
 
 namespace {
@@ -35,6 +37,7 @@ struct PvsCliOptions {
   std::vector<std::string> scenes;
   std::string grid, box, cells;
   bool json = false, jsonl = false, resume = false, no_witnesses = false, quiet = false, no_hierarchy = false;
+  bool coherence = false;
   std::string output, vtp, method = "exact", shard, seed = "1";
   std::string png, png_size = "1280x960";
   std::int64_t png_cell = 0;
@@ -110,6 +113,7 @@ int run_pvs(const PvsCliOptions& o) {
     }
   }();
   if (o.samples < 0) throw std::invalid_argument("--samples must be >= 0");
+  if (o.coherence && method != region::PvsMethod::exact) throw std::invalid_argument("--coherence: only with --method exact");
   if (o.rays < -1) throw std::invalid_argument("--rays must be >= 0");
   region::PvsOptions po;
   po.query.samples = o.samples;
@@ -215,11 +219,23 @@ int run_pvs(const PvsCliOptions& o) {
     CellsProgress bar("pvs", mine.size(), "triangles", writer && app::progress_wanted(o.quiet));
     for (std::size_t i = 0; i < mine.size() - todo.size(); ++i) bar.finish_item();
     app::PvsRunHooks hooks;
+    std::optional<region::CellPvs> previous;  // --coherence: the last cell this process computed
     hooks.compute = [&](const app::CellJob& job) {
       bar.start_item(scene.triangles.size());
       region::PvsOptions cell_options = po;
       cell_options.on_progress = [&bar](std::int64_t d) { bar.item_steps(static_cast<std::uint64_t>(d)); };
-      const region::CellPvs pvs = region::compute_cell_pvs(method, context, job.box, cell_options);
+      // Coherence only from a neighbour (closed boxes meeting: a shared face, edge or corner).
+      const bool neighbour = o.coherence && previous && [&] {
+        for (int k = 0; k < 3; ++k)
+          if (previous->cell.hi[k] < job.box.lo[k] || job.box.hi[k] < previous->cell.lo[k]) return false;
+        return true;
+      }();
+      region::CellPvs pvs = o.coherence ? region::exact_cell_pvs(context, job.box, cell_options,
+                                                                 neighbour ? &*previous : nullptr)
+                                        : region::compute_cell_pvs(method, context, job.box, cell_options);
+      if (o.coherence && !o.quiet && neighbour)
+        std::cerr << "cell " << job.index << ": " << pvs.stats.neighbour_hits << " of " << pvs.stats.neighbour_tries
+                  << " triangles accepted through the previous cell's witnesses, " << pvs.stats.exact_queries << " exact queries\n";
       if (method == region::PvsMethod::sampled && !o.quiet)
         std::cerr << "cell " << job.index << ": " << pvs.stats.rays_cast << " rays in " << pvs.stats.seconds << " s ("
                   << (pvs.stats.seconds > 0 ? static_cast<double>(pvs.stats.rays_cast) / pvs.stats.seconds : 0.0)
@@ -228,7 +244,9 @@ int run_pvs(const PvsCliOptions& o) {
         std::cerr << "cell " << job.index << ": " << pvs.stats.culled << " of " << pvs.stats.triangles
                   << " triangles proved hidden in " << pvs.stats.seconds << " s, " << pvs.stats.visible << " listed\n";
       if (!o.vtp.empty()) write_cell_vtp(o.vtp, scene, job.index, pvs);
-      return pvs_cell_json(scene, job.index, pvs, with_witnesses);
+      OrderedJson cell_json = pvs_cell_json(scene, job.index, pvs, with_witnesses);
+      if (o.coherence) previous = std::move(pvs);
+      return cell_json;
     };
     hooks.finished = [&](const OrderedJson& cell) {
       bar.finish_item();
@@ -333,6 +351,9 @@ const exactvis::app::CommandRegistration registration("pvs", 110, [](CLI::App& p
   sub->add_option("--rays", o->rays,
                   "exact: Embree rays per triangle proposing witnesses (default 8); sampled: random rays per cell "
                   "(default 100000); every hit re-checked exactly");
+  sub->add_flag("--coherence", o->coherence,
+                "exact: try each visible triangle's witness from the previous neighbouring cell first (re-checked "
+                "exactly; same visible sets, witnesses then depend on the order the cells are computed in)");
   sub->add_flag("--no-hierarchy", o->no_hierarchy,
                 "exact: decide every triangle on its own (no hidden-box culling; same answers, for comparison)");
   exactvis::app::add_seed_option(*sub, o->seed);

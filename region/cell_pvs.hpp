@@ -97,6 +97,8 @@ struct CellPvsStats {
                                        // not in JSON files)
   std::int64_t virtual_occluders = 0;  // boxes registered as virtual occluders (before the cap; not in JSON)
   std::int64_t virtual_tests = 0;      // exact virtual-occluder tests run (not in JSON files)
+  std::int64_t neighbour_tries = 0;    // coherence: triangles with a previous cell's witness to try (not in JSON)
+  std::int64_t neighbour_hits = 0;     // of those, accepted through it (counted in accepted_by_rays; not in JSON)
   std::int64_t rays_cast = 0;          // method `sampled`: random rays cast from the cell
   VisibilityStats query;               // accumulated over the exact queries (exact_evaluations left at 0)
   double seconds = 0;                  // wall-clock time (for benchmarks; not written to JSON files)

@@ -30,13 +30,59 @@ struct TriangleAnswer {
   bool visible = false;
   bool by_rays = false;
   bool by_occluder = false;  // proved hidden by one wall or one convex solid
+  bool by_neighbour = false;  // accepted through the previous cell's witness (counted in by_rays too)
   std::optional<Witness> witness;
   VisibilityStats stats;
 };
 
 }  // namespace
 
+namespace {
+
+bool in_open_box(const RationalPoint3& p, const RationalBox3& b) {
+  for (int k = 0; k < 3; ++k)
+    if (!(b.lo[k] < p[k] && p[k] < b.hi[k])) return false;
+  return true;
+}
+
+// Proposals for this cell from a witness (p, q) of a neighbouring cell: p pulled into this cell (the nearest
+// point of the cell shrunk by 1/64 of its size per side: a short move, so the segment likely stays free;
+// doubles when they land strictly inside, else exact), then p translated by the offset between the cells.
+// Only proposals: each is re-checked exactly by is_robust_cell_witness.
+std::vector<Witness> neighbour_proposals(const Witness& w, const RationalBox3& cell, const Box3& approx,
+                                         const RationalBox3& previous) {
+  std::vector<Witness> out;
+  Point3 pd;
+  for (int k = 0; k < 3; ++k) {
+    const double m = (approx.hi[k] - approx.lo[k]) / 64;
+    pd[k] = std::min(std::max(CGAL::to_double(w.p[k]), approx.lo[k] + m), approx.hi[k] - m);
+  }
+  const RationalPoint3 pulled{Exact(pd.x), Exact(pd.y), Exact(pd.z)};
+  if (in_open_box(pulled, cell)) {
+    out.push_back({pulled, w.q});
+  } else {
+    RationalPoint3 p = w.p;
+    for (int k = 0; k < 3; ++k) {
+      const Exact m = (cell.hi[k] - cell.lo[k]) / 64;
+      if (p[k] < cell.lo[k] + m) p[k] = cell.lo[k] + m;
+      if (p[k] > cell.hi[k] - m) p[k] = cell.hi[k] - m;
+    }
+    out.push_back({p, w.q});
+  }
+  const RationalPoint3 moved{w.p.x + (cell.lo.x - previous.lo.x), w.p.y + (cell.lo.y - previous.lo.y),
+                             w.p.z + (cell.lo.z - previous.lo.z)};
+  if (in_open_box(moved, cell) && !(moved == out.front().p)) out.push_back({moved, w.q});
+  return out;
+}
+
+}  // namespace
+
 CellPvs exact_cell_pvs(const PvsContext& context, const RationalBox3& cell, const PvsOptions& options) {
+  return exact_cell_pvs(context, cell, options, nullptr);
+}
+
+CellPvs exact_cell_pvs(const PvsContext& context, const RationalBox3& cell, const PvsOptions& options,
+                       const CellPvs* previous) {
   check_view_cell(cell);
   check_thread_count(options.threads);
   const auto start = std::chrono::steady_clock::now();
@@ -46,6 +92,11 @@ CellPvs exact_cell_pvs(const PvsContext& context, const RationalBox3& cell, cons
   const Box3 approx = approximate_box(cell);
   std::vector<TriangleAnswer> answers(n);
   std::atomic<std::int64_t> decided{0};
+  // Coherence: the previous cell's witnesses, by triangle (proposals only: they never decide "hidden").
+  std::vector<const Witness*> neighbour(previous ? n : 0, nullptr);
+  if (previous)
+    for (const VisibleTriangle& v : previous->visible)
+      if (v.witness && v.index >= 0 && static_cast<std::size_t>(v.index) < n) neighbour[v.index] = &*v.witness;
 
   // Single-occluder proofs (one wall or one convex solid, region/single_occluder_culling.hpp): exact and
   // cheap, so they run before the line-space box test on every node, and on each triangle the rays do not
@@ -58,7 +109,15 @@ CellPvs exact_cell_pvs(const PvsContext& context, const RationalBox3& cell, cons
     const auto t = static_cast<std::int64_t>(i);
     TriangleAnswer& a = answers[i];
     std::mt19937_64 rng(mix_seed(options.query.seed, i));
-    if (auto w = ray_witness(context, cell, approx, t, options.rays, rng)) {
+    if (!neighbour.empty() && neighbour[i])
+      for (Witness& w : neighbour_proposals(*neighbour[i], cell, approx, previous->cell))
+        if (is_robust_cell_witness(context, cell, t, w)) {
+          a.visible = a.by_rays = a.by_neighbour = true;
+          a.witness = std::move(w);
+          break;
+        }
+    if (a.by_neighbour) {
+    } else if (auto w = ray_witness(context, cell, approx, t, options.rays, rng)) {
       a.visible = a.by_rays = true;
       a.witness = std::move(w);
     } else if (hint && proofs->hides_triangle(t, *hint)) {
@@ -208,6 +267,7 @@ CellPvs exact_cell_pvs(const PvsContext& context, const RationalBox3& cell, cons
     if (culled[i] == 2 || a.by_occluder) ++out.stats.culled_by_occluders;
     if (culled[i] == 3) ++out.stats.culled_by_virtual;
     if (culled[i] || a.by_occluder) continue;
+    if (a.by_neighbour) ++out.stats.neighbour_hits;
     if (a.by_rays) ++out.stats.accepted_by_rays;
     else {
       ++out.stats.exact_queries;
@@ -216,6 +276,8 @@ CellPvs exact_cell_pvs(const PvsContext& context, const RationalBox3& cell, cons
     if (a.visible) out.visible.push_back({static_cast<std::int64_t>(i), a.witness});
   }
   out.stats.visible = static_cast<std::int64_t>(out.visible.size());
+  if (previous)
+    for (std::size_t i = 0; i < n; ++i) out.stats.neighbour_tries += neighbour[i] && !culled[i] ? 1 : 0;
   out.stats.boxes_tested = boxes_tested;
   out.stats.boxes_culled = boxes_culled;
   out.stats.virtual_occluders = dark.added();

@@ -28,4 +28,13 @@ namespace exactvis::region {
 // culled subtrees, plus the box tests and the single-occluder tests (double tests per usable wall / solid).
 CellPvs exact_cell_pvs(const PvsContext& context, const RationalBox3& cell, const PvsOptions& options);
 
+// The same with coherence between neighbouring cells (seed 004; docs/theory.md §5.8): `previous` (may be null)
+// is the answer of a neighbouring cell of the same scene; each of its visible triangles' witnesses proposes
+// witnesses here (its cell point pulled into this cell, or translated by the offset between the cells), tried
+// before the Embree rays and accepted only through the exact check of region/ray_witness.hpp. The visible set
+// is the same as without `previous` (a proposal only ever accepts a triangle that is visible); witnesses and
+// counters then depend on `previous` (stats.neighbour_tries / neighbour_hits count the proposals and hits).
+CellPvs exact_cell_pvs(const PvsContext& context, const RationalBox3& cell, const PvsOptions& options,
+                       const CellPvs* previous);
+
 }  // namespace exactvis::region

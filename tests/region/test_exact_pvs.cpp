@@ -285,4 +285,48 @@ TEST(ExactPvs, DarkBoxBehindAWallShadowsOnlyItsUmbra) {
   EXPECT_GT(far_visible, 10);
 }
 
+TEST(ExactPvs, CoherenceProposalsNeverChangeTheVisibleSet) {
+  // Two neighbouring street cells: B computed with A's answer as proposals has B's visible set, hits some,
+  // and its witnesses pass the oracle. A forged "previous" answer calling every triangle visible with a
+  // witness through the scene changes nothing either: proposals are only accepted through the exact check.
+  const Scene scene = generate_scene("town", 200, 4);
+  const Box3 b = bounding_box(scene);
+  const RationalBox3 a = box(b.lo.x + 0.25, b.lo.y + 0.25, 1, b.lo.x + 1.5, b.lo.y + 1.5, 2);
+  const RationalBox3 c = box(b.lo.x + 1.5, b.lo.y + 0.25, 1, b.lo.x + 2.75, b.lo.y + 1.5, 2);
+  const PvsContext context(scene);
+  const CellPvs pa = exact_cell_pvs(context, a, {});
+  const CellPvs plain = exact_cell_pvs(context, c, {});
+  const CellPvs coherent = exact_cell_pvs(context, c, {}, &pa);
+  CellPvs forged;
+  forged.cell = a;
+  for (std::size_t i = 0; i < scene.triangles.size(); ++i) {
+    const SceneTriangle& t = scene.triangles[i];
+    RationalPoint3 q;
+    for (int k = 0; k < 3; ++k)
+      q[k] = (Exact(scene.corner(t, 0)[k]) + Exact(scene.corner(t, 1)[k]) + Exact(scene.corner(t, 2)[k])) / 3;
+    RationalPoint3 p;
+    for (int k = 0; k < 3; ++k) p[k] = (a.lo[k] + a.hi[k]) / 2;
+    forged.visible.push_back({static_cast<std::int64_t>(i), Witness{p, q}});
+  }
+  const CellPvs from_forged = exact_cell_pvs(context, c, {}, &forged);
+  const std::vector<oracle::Triangle> os = region_test::oracle_scene(scene);
+  const oracle::Source src = region_test::oracle_box(c.lo, c.hi);
+  for (const CellPvs* r : {&coherent, &from_forged}) {
+    ASSERT_EQ(r->visible.size(), plain.visible.size());
+    for (std::size_t k = 0; k < plain.visible.size(); ++k) {
+      EXPECT_EQ(r->visible[k].index, plain.visible[k].index);
+      std::string why;
+      ASSERT_TRUE(r->visible[k].witness.has_value());
+      EXPECT_TRUE(oracle::witness_is_valid(os, static_cast<std::size_t>(r->visible[k].index), src,
+                                           qv(r->visible[k].witness->p), qv(r->visible[k].witness->q), &why))
+          << r->visible[k].index << ": " << why;
+    }
+    EXPECT_EQ(r->stats.accepted_by_rays + r->stats.exact_queries + r->stats.culled, r->stats.triangles);
+  }
+  EXPECT_GT(coherent.stats.neighbour_hits, 0);
+  EXPECT_LE(coherent.stats.neighbour_hits, coherent.stats.neighbour_tries);
+  EXPECT_EQ(plain.stats.neighbour_tries, 0);
+  EXPECT_LE(coherent.stats.exact_queries, plain.stats.exact_queries);
+}
+
 }  // namespace

@@ -112,6 +112,36 @@ TEST_F(PvsCli, JsonShapeEqualsVisibleAndWitnessesCheckByOracle) {
   EXPECT_EQ(s.out, slurp(path("pvs.json")));
 }
 
+TEST_F(PvsCli, CoherenceKeepsTheVisibleSetsAndItsWitnessesCheckByOracle) {
+  // --coherence: each cell tries the previous neighbouring cell's witnesses first. Same visible sets as
+  // without; every witness (many now come from the cell before) re-checked by the oracle against its cell.
+  const std::string base = "pvs " + path("town.obj") + " --grid 3,2,1 --box 0,0,0.5,20,12,3 --json -o ";
+  ASSERT_EQ(run(base + path("plain.json") + " -q").status, 0);
+  const CliRun c = run(base + path("coh.json") + " --coherence");
+  ASSERT_EQ(c.status, 0) << c.err;
+  EXPECT_NE(c.err.find("accepted through the previous cell's witnesses"), std::string::npos) << c.err;
+  const json plain = json::parse(slurp(path("plain.json"))), coh = json::parse(slurp(path("coh.json")));
+  ASSERT_EQ(coh["cells"].size(), 6u);
+  const auto os = read_obj(path("town.obj"));
+  for (std::size_t k = 0; k < 6; ++k) {
+    const json& cell = coh["cells"][k];
+    EXPECT_EQ(cell["visible"], plain["cells"][k]["visible"]) << "cell " << k;
+    oracle::Source src;
+    src.is_box = true;
+    src.lo = {json_rational(cell["box"][0]), json_rational(cell["box"][1]), json_rational(cell["box"][2])};
+    src.hi = {json_rational(cell["box"][3]), json_rational(cell["box"][4]), json_rational(cell["box"][5])};
+    EXPECT_EQ(cell["witnesses"].size(), cell["visible"].size());
+    for (const auto& [id, w] : cell["witnesses"].items()) {
+      std::string why;
+      EXPECT_TRUE(oracle::witness_is_valid(os, std::stoul(id), src, json_point(w[0]), json_point(w[1]), &why))
+          << "cell " << k << " triangle " << id << ": " << why;
+    }
+  }
+  const CliRun bad = run("pvs " + path("town.obj") + " --grid 2,1,1 --coherence --method sampled -q");
+  EXPECT_EQ(bad.status, 1);
+  EXPECT_NE(bad.err.find("--coherence"), std::string::npos) << bad.err;
+}
+
 TEST_F(PvsCli, CellsFileJsonLinesAndResume) {
   std::ofstream(path("cells.json")) << R"({"cells": [[1,1,1,2,2,2], ["1/3",5,0.5,"7/3",6,"3/2"], [10,3,0,12,5,4]]})";
   const std::string base = "pvs " + path("town.obj") + " --cells " + path("cells.json") + " -q ";
