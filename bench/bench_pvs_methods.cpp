@@ -8,7 +8,7 @@
 // Usage: bench_pvs_methods [--kinds town,forest] [--sizes 2000,10000] [--threads 2] [--exact-max N]
 //                          [--rays R] [--scan-max M]
 //   --exact-max: run exact (and sampled at equal time) only up to N triangles (default 10000); above it, only
-//   conservative and sampled with --rays (default 10^6; 0: no sampled row) are timed.
+//   conservative and sampled with --rays (default 10^6) are timed; --rays 0: no sampled rows at all.
 //   --scan-max: also time conservative with the scan over all occluders (OccluderSearch::scan, the reference
 //   of the 2D footprint grid) up to M triangles (default 0: not run); its PVS must equal the grid's.
 #include "bench/bench_util.hpp"
@@ -110,7 +110,7 @@ int main(int argc, char** argv) {
         std::snprintf(buf, sizeof buf, "grid %.1fx", t_scan.cpu / std::max(1e-6, t_cons.cpu));
         row("cons.scan", t_scan, scan.stats.visible, buf, 0, same ? "same" : "DIFFERENT!");
       }
-      if (!with_exact && rays == 0) continue;
+      if (rays == 0) continue;  // no sampled rows
       // Sampled: calibrate the ray rate, then (with exact) as many rays as exact's time allows.
       region::PvsOptions so = po;
       so.cell_rays = 100000;

@@ -10,7 +10,9 @@
 //   footprint, and the vertical umbra bound in every directional plane. Walls come merged into maximal runs
 //   (a facade strip, a column between windows), which is the vertical/horizontal umbra merging of a wall's
 //   own pieces. When no single wall proves a target hidden, pairs of walls meeting at a footprint endpoint
-//   (building corners) are tried (wall_pair_hides_exactly: umbra fusion across two adjacent walls).
+//   (building corners) are tried (wall_pair_hides_exactly: umbra fusion across two adjacent walls), then
+//   chains of walls linked by contacts or by view overlaps (wall_chain_hides_exactly: facade runs with
+//   their corners, buildings overlapping across a street).
 //   The scene's triangle hierarchy (region/triangle_bvh.hpp) is traversed from the root: a
 //   node box proved hidden by one wall hides its whole subtree.
 // - Other scenes (fallback): the same wall proofs for the scene's vertical rectangles, when it has any

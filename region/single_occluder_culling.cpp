@@ -85,10 +85,12 @@ SingleOccluderCulling::SingleOccluderCulling(const PvsContext& context, const Ra
       at_end[{walls[w].ax, walls[w].ay}].push_back(w);
       at_end[{walls[w].bx, walls[w].by}].push_back(w);
     }
+    links_.resize(walls.size());
     for (const auto& [end, list] : at_end)
       for (std::size_t i = 0; i < list.size(); ++i)
         for (std::size_t j = i + 1; j < list.size(); ++j) {
           const WallRectangle &u = walls[list[i]], &v = walls[list[j]];
+          links_[list[i]].push_back(list[j]), links_[list[j]].push_back(list[i]);
           if ((u.bx - u.ax) * (v.by - v.ay) - (u.by - u.ay) * (v.bx - v.ax) == 0) continue;  // a proposal only
           corner_pairs_.push_back({list[i], list[j]});
         }
@@ -137,6 +139,87 @@ bool SingleOccluderCulling::try_pair(std::size_t w, std::size_t u, const UmbraTa
   return wall_pair_hides_exactly(walls[w], walls[u], cell_, target);
 }
 
+bool SingleOccluderCulling::try_chains(const std::vector<std::size_t>& candidates, const UmbraTarget& target) const {
+  const std::vector<WallRectangle>& walls = context_.extruded().walls;
+  std::vector<std::size_t> members;
+  for (const std::size_t w : candidates)
+    if (wall_may_join_chain(walls[w], prepared_[w], approx_, target)) members.push_back(w);
+  if (members.size() < 2) return false;
+  std::sort(members.begin(), members.end());
+  std::vector<std::size_t> parent(members.size());
+  for (std::size_t i = 0; i < parent.size(); ++i) parent[i] = i;
+  auto find = [&](std::size_t i) {
+    while (parent[i] != i) i = parent[i] = parent[parent[i]];
+    return i;
+  };
+  auto position = [&](std::size_t w) {
+    const auto it = std::lower_bound(members.begin(), members.end(), w);
+    return it != members.end() && *it == w ? static_cast<std::ptrdiff_t>(it - members.begin()) : std::ptrdiff_t{-1};
+  };
+  std::vector<std::pair<std::size_t, std::size_t>> links;  // (member position, member position)
+  for (std::size_t i = 0; i < members.size(); ++i)
+    for (const std::size_t u : links_[members[i]]) {
+      const std::ptrdiff_t j = position(u);
+      if (j <= static_cast<std::ptrdiff_t>(i)) continue;  // not a member, or counted from the other end
+      links.push_back({i, static_cast<std::size_t>(j)});
+      parent[find(i)] = find(static_cast<std::size_t>(j));
+    }
+  // View-overlap links (the exact test proves them): from the target's centre, each member's footprint spans
+  // an interval of directions (measured from the direction to the cell's centre, so no interval wraps);
+  // sweeping them by their start proposes links between overlapping arcs (checked in doubles here, exactly later).
+  {
+    double tx = 0, ty = 0;
+    for (const Point3& p : target.points) tx += p.x, ty += p.y;
+    tx /= static_cast<double>(target.points.size()), ty /= static_cast<double>(target.points.size());
+    const double rx = 0.5 * (approx_.lo.x + approx_.hi.x) - tx, ry = 0.5 * (approx_.lo.y + approx_.hi.y) - ty;
+    auto angle = [&](double x, double y) { return std::atan2(rx * (y - ty) - ry * (x - tx), rx * (x - tx) + ry * (y - ty)); };
+    struct Arc {
+      double lo, hi;
+      std::size_t member;
+    };
+    std::vector<Arc> arcs;
+    for (std::size_t i = 0; i < members.size(); ++i) {
+      const WallRectangle& w = walls[members[i]];
+      const double a = angle(w.ax, w.ay), b = angle(w.bx, w.by);
+      arcs.push_back({std::min(a, b), std::max(a, b), i});
+    }
+    std::sort(arcs.begin(), arcs.end(), [](const Arc& x, const Arc& y) { return x.lo < y.lo || (x.lo == y.lo && x.member < y.member); });
+    // Sweep by start; each arc is linked to the (at most 4) open arcs reaching farthest that pass the double
+    // view-overlap test from the whole cell and target (a bounded number of proposals per wall).
+    std::vector<std::size_t> open;  // indices into arcs, by decreasing hi
+    for (std::size_t k = 0; k < arcs.size(); ++k) {
+      while (!open.empty() && arcs[open.back()].hi < arcs[k].lo) open.pop_back();
+      int proposed = 0;
+      for (std::size_t o = 0; o < open.size() && proposed < 4; ++o) {
+        if (arcs[open[o]].hi < arcs[k].lo) continue;
+        const std::size_t i = arcs[open[o]].member, j = arcs[k].member;
+        if (find(i) == find(j)) continue;
+        ++proposed;
+        if (!walls_views_may_overlap(walls[members[i]], walls[members[j]], approx_, target)) continue;
+        links.push_back({std::min(i, j), std::max(i, j)});
+        parent[find(i)] = find(j);
+      }
+      open.insert(std::upper_bound(open.begin(), open.end(), k, [&](std::size_t a, std::size_t b) { return arcs[a].hi > arcs[b].hi; }), k);
+    }
+  }
+  // Group members and links by component (deterministic: by the smallest member of each).
+  std::map<std::size_t, std::vector<std::size_t>> groups;
+  for (std::size_t i = 0; i < members.size(); ++i) groups[find(i)].push_back(i);
+  for (const auto& [root, group] : groups) {
+    if (group.size() < 2) continue;  // one wall: tried alone before
+    std::vector<WallRectangle> chain;
+    std::vector<std::size_t> local(members.size(), 0);
+    for (const std::size_t i : group) local[i] = chain.size(), chain.push_back(walls[members[i]]);
+    if (!wall_chain_may_cover(chain, approx_, target)) continue;
+    std::vector<std::pair<std::size_t, std::size_t>> chain_links;
+    for (const auto& [i, j] : links)
+      if (find(i) == root) chain_links.push_back({local[i], local[j]});
+    exact_tests_.fetch_add(1, std::memory_order_relaxed);
+    if (wall_chain_hides_exactly(chain, chain_links, cell_, target)) return true;
+  }
+  return false;
+}
+
 template <class Owns>
 bool SingleOccluderCulling::hides(const UmbraTarget& target, const Box3& target_box, const Owns& owns_triangle_of,
                                   std::ptrdiff_t& hint) const {
@@ -156,6 +239,7 @@ bool SingleOccluderCulling::hides(const UmbraTarget& target, const Box3& target_
       }
     for (const auto& [w, u] : corner_pairs_)
       if (try_pair(w, u, target)) return true;
+    if (try_chains(usable_walls_, target)) return true;
   } else if (!usable_walls_.empty()) {
     // Only walls whose footprint meets the top view of conv(cell's footprint ∪ target points) can pass
     // condition (ii) (every corner-to-point segment lies in that hull); the grid lists at least those.
@@ -180,6 +264,8 @@ bool SingleOccluderCulling::hides(const UmbraTarget& target, const Box3& target_
     for (const std::size_t w : tried)
       for (const std::size_t u : partners_[w])
         if ((u > w || !std::binary_search(listed.begin(), listed.end(), u)) && try_pair(w, u, target)) return true;
+    // A chain member must have a footprint some corner-to-point segment crosses, so it meets the hull: listed.
+    if (try_chains(tried, target)) return true;
   }
   if (usable_solids_.empty()) return false;
   const std::vector<ConvexSolid>& solids = context_.solids();

@@ -1,7 +1,8 @@
 #pragma once
 // Single-occluder culling from one view cell: the exact proofs that a triangle or a BVH node box is hidden by
 // ONE wall rectangle (region/wall_umbra.hpp, docs/theory.md §5.10), two walls meeting at a footprint endpoint
-// (umbra fusion at a building's corner, wall_pair_hides_exactly, §5.10) or ONE closed convex solid
+// (umbra fusion at a building's corner, wall_pair_hides_exactly, §5.10), a chain of walls joined end to end
+// (a facade run with its corners, wall_chain_hides_exactly, §5.10) or ONE closed convex solid
 // (region/convex_occluder.hpp, §5.9). Shared by method `conservative` (its only hidden test) and method
 // `exact` (a cheap proof tried before Embree rays and the line-space query, §5.8).
 //
@@ -46,7 +47,8 @@ class SingleOccluderCulling {
   // wall of the last proof nearby (or -1): tried first, updated on a wall proof. Thread-safe (hints are the
   // caller's). Cost (grid): one double test per wall whose footprint box meets the widened top view of the
   // cell-to-target hull (nearest first, stopping at the first proof), per corner pair with such a wall
-  // (after the walls), and per solid near the segment between box centres, plus an exact test per proposal.
+  // (after the walls), per chain of such walls (after the pairs), and per solid near the segment between box
+  // centres, plus an exact test per proposal.
   // Cost (scan): the same over every usable wall, pair and solid.
   bool hides_triangle(std::int64_t triangle, std::ptrdiff_t& hint) const;
 
@@ -63,6 +65,11 @@ class SingleOccluderCulling {
              std::ptrdiff_t& hint) const;
 
   bool try_pair(std::size_t w, std::size_t u, const UmbraTarget& target) const;
+  // Chains (wall_chain_hides_exactly): the connected components, by shared footprint endpoints and by
+  // directions overlapping as seen from the target's centre, of the
+  // candidates that may join a chain for this target (wall_may_join_chain); those of 2 walls or more are
+  // tried (a pair that touches was tried before and fails the same double covering test again).
+  bool try_chains(const std::vector<std::size_t>& candidates, const UmbraTarget& target) const;
 
   const PvsContext& context_;
   RationalBox3 cell_;
@@ -72,6 +79,7 @@ class SingleOccluderCulling {
   std::vector<std::size_t> usable_walls_, usable_solids_;
   std::vector<std::pair<std::size_t, std::size_t>> corner_pairs_;  // walls sharing a footprint endpoint
   std::vector<std::vector<std::size_t>> partners_;  // per wall: its corner_pairs_ partners (grid search)
+  std::vector<std::vector<std::size_t>> links_;     // per wall: usable walls sharing a footprint endpoint
   FootprintGrid wall_grid_, solid_grid_;  // items: positions in usable_walls_ / usable_solids_
   mutable std::atomic<std::int64_t> exact_tests_{0};
 };

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <numeric>
 
 namespace exactvis::region {
 namespace {
@@ -105,6 +106,36 @@ bool footprints_meet(const WallRectangle& w1, const WallRectangle& w2) {
   return o1 * o2 <= 0 && o3 * o4 <= 0;
 }
 
+// For every view point x (a corner of a convex region, all strictly off wall j's line), the ray from x
+// through e meets wall j's closed footprint. The two orientations are affine in x and so is the sign that
+// puts the meeting point ahead of x, so the vertices decide for the whole region.
+template <class NT>
+bool ray_through_meets(const P2<NT>& e, const WallRectangle& wall, const std::vector<P2<NT>>& views) {
+  const P2<NT> a{NT(wall.ax), NT(wall.ay)}, b{NT(wall.bx), NT(wall.by)};
+  auto ordered = [&](const P2<NT>& first, const P2<NT>& second) {
+    for (const auto& x : views)
+      if (sgn(cross(x, e, first)) < 0 || sgn(cross(x, e, second)) > 0) return false;
+    return true;
+  };
+  if (!ordered(a, b) && !ordered(b, a)) return false;
+  const NT fe = cross(a, b, e);
+  for (const auto& x : views) {
+    const NT fx = cross(a, b, x);  // the meeting point is x + t (e - x) with t = fx / (fx - fe) > 0
+    if (sgn(fx) == 0 || sgn(fx) * sgn(NT(fx - fe)) <= 0) return false;
+  }
+  return true;
+}
+
+// Seen from every point of the region conv(views), the directions to the two footprints overlap (some ray
+// from the point meets both): one footprint's endpoint is seen in front of or behind the other.
+template <class NT>
+bool views_overlap(const WallRectangle& u, const WallRectangle& v, const std::vector<P2<NT>>& views) {
+  const P2<NT> ua{NT(u.ax), NT(u.ay)}, ub{NT(u.bx), NT(u.by)};
+  const P2<NT> va{NT(v.ax), NT(v.ay)}, vb{NT(v.bx), NT(v.by)};
+  return ray_through_meets(ua, v, views) || ray_through_meets(ub, v, views) || ray_through_meets(va, u, views) ||
+         ray_through_meets(vb, u, views);
+}
+
 }  // namespace
 
 WallFromCell prepare_wall(const WallRectangle& wall, const Box3& cell) {
@@ -154,6 +185,87 @@ bool wall_pair_may_hide(const WallRectangle& w1, const WallFromCell& p1, const W
   q.reserve(target.points.size());
   for (const auto& p : target.points) q.push_back({p.x, p.y});
   return pair_hides<double>(w1, w2, corners, cell.lo.z, cell.hi.z, q, target.z_lo, target.z_hi);
+}
+
+bool wall_may_join_chain(const WallRectangle& wall, const WallFromCell& prepared, const Box3& cell,
+                         const UmbraTarget& target) {
+  if (!prepared.usable) return false;
+  const auto corners = cell_corners(cell.lo.x, cell.lo.y, cell.hi.x, cell.hi.y);
+  std::vector<P2<double>> q;
+  q.reserve(target.points.size());
+  for (const auto& p : target.points) q.push_back({p.x, p.y});
+  if (!crossing_height_within(wall, corners, cell.lo.z, cell.hi.z, q, target.z_lo, target.z_hi)) return false;
+  for (const auto& c : corners)
+    for (const auto& p : q)
+      if (crosses_footprint(wall, c, p)) return true;
+  return false;
+}
+
+bool wall_chain_may_cover(const std::vector<WallRectangle>& walls, const Box3& cell, const UmbraTarget& target) {
+  const auto corners = cell_corners(cell.lo.x, cell.lo.y, cell.hi.x, cell.hi.y);
+  for (const auto& c : corners)
+    for (const auto& p : target.points) {
+      const P2<double> q{p.x, p.y};
+      if (std::none_of(walls.begin(), walls.end(), [&](const WallRectangle& w) { return crosses_footprint(w, c, q); }))
+        return false;
+    }
+  return !walls.empty();
+}
+
+bool wall_chain_hides_exactly(const std::vector<WallRectangle>& walls,
+                              const std::vector<std::pair<std::size_t, std::size_t>>& links, const RationalBox3& cell,
+                              const UmbraTarget& target) {
+  if (walls.empty() || target.points.empty()) return false;
+  // Connectivity of the footprints' union: every claimed contact checked exactly, and the contacts join all.
+  std::vector<std::size_t> parent(walls.size());
+  std::iota(parent.begin(), parent.end(), std::size_t{0});
+  auto find = [&](std::size_t i) {
+    while (parent[i] != i) i = parent[i] = parent[parent[i]];
+    return i;
+  };
+  const auto corners = cell_corners(cell.lo.x, cell.lo.y, cell.hi.x, cell.hi.y);
+  std::vector<P2<Exact>> q;
+  q.reserve(target.points.size());
+  for (const auto& p : target.points) q.push_back({Exact(p.x), Exact(p.y)});
+  const Exact tz0(target.z_lo), tz1(target.z_hi);
+  // Conditions (i) and (iii) for every wall first: the view-overlap links rely on (i).
+  for (const WallRectangle& w : walls)
+    if (!crossing_height_within(w, corners, cell.lo.z, cell.hi.z, q, tz0, tz1)) return false;
+  // The links that hold (the others are dropped), and the chains they join.
+  const std::vector<P2<Exact>> cell_views(corners.begin(), corners.end());
+  for (const auto& [i, j] : links) {
+    if (i >= walls.size() || j >= walls.size()) continue;
+    if (!footprints_meet(walls[i], walls[j]) &&
+        !(views_overlap(walls[i], walls[j], cell_views) && views_overlap(walls[i], walls[j], q)))
+      continue;
+    parent[find(i)] = find(j);
+  }
+  // Condition (ii'') for some chain: every corner-to-point segment crosses one of its footprints.
+  std::vector<char> tried(walls.size(), 0);
+  for (std::size_t r = 0; r < walls.size(); ++r) {
+    const std::size_t root = find(r);
+    if (tried[root]) continue;
+    tried[root] = 1;
+    bool covered = true;
+    for (const auto& c : corners)
+      for (const auto& p : q)
+        if (covered) {
+          bool met = false;
+          for (std::size_t w = 0; w < walls.size() && !met; ++w) met = find(w) == root && crosses_footprint(walls[w], c, p);
+          covered = met;
+        }
+    if (covered) return true;
+  }
+  return false;
+}
+
+bool walls_views_may_overlap(const WallRectangle& u, const WallRectangle& v, const Box3& cell,
+                             const UmbraTarget& target) {
+  const auto corners = cell_corners(cell.lo.x, cell.lo.y, cell.hi.x, cell.hi.y);
+  std::vector<P2<double>> q;
+  q.reserve(target.points.size());
+  for (const auto& p : target.points) q.push_back({p.x, p.y});
+  return views_overlap(u, v, std::vector<P2<double>>(corners.begin(), corners.end())) && views_overlap(u, v, q);
 }
 
 bool wall_pair_hides_exactly(const WallRectangle& w1, const WallRectangle& w2, const RationalBox3& cell,

@@ -17,6 +17,8 @@
 #include "region/convex_polygon_3.hpp"
 #include "region/extruded_scene.hpp"
 
+#include <cstddef>
+#include <utility>
 #include <vector>
 
 namespace exactvis::region {
@@ -54,5 +56,29 @@ bool wall_pair_hides_exactly(const WallRectangle& w1, const WallRectangle& w2, c
                              const UmbraTarget& target);
 bool wall_pair_may_hide(const WallRectangle& w1, const WallFromCell& p1, const WallRectangle& w2,
                         const WallFromCell& p2, const Box3& cell_approx, const UmbraTarget& target);
+
+// Umbra fusion along a chain of walls (docs/theory.md §5.10, "A chain of walls"): R is hidden from C by
+// W_1 ∪ ... ∪ W_m when the cell and every Q_j lie strictly on opposite sides of each wall's line with the
+// vertical condition for each wall (its own lambda range), every segment from a cell corner to a Q_j meets
+// some footprint, and the walls are joined by links, each either a contact (the closed footprints share a
+// point: a facade run with its corners) or a view overlap (from every point of the cell's footprint and of
+// conv(Q_j), some ray meets both footprints: an endpoint of one is seen in front of or behind the other,
+// so the gap between them is closed as seen from both ends: two buildings overlapping across a street).
+// (The two-wall theorem is the case m = 2 with a contact.) `links` are pairs of indices into `walls` the
+// caller proposes; each is checked exactly, those that fail are dropped, and the answer is true when the
+// walls joined by the links that hold include a chain that meets every corner-to-Q_j segment.
+// Exact; cost O(m k) products plus O(links) footprint contacts. An empty or unlinked chain gives false.
+bool wall_chain_hides_exactly(const std::vector<WallRectangle>& walls,
+                              const std::vector<std::pair<std::size_t, std::size_t>>& links, const RationalBox3& cell,
+                              const UmbraTarget& target);
+// Double proposals: one wall's side and height conditions ((i) and (iii)) and whether some cell-corner-to-Q_j
+// segment crosses its footprint (a wall no such segment crosses adds nothing to a chain but its contacts);
+// and the chain's covering condition (every corner-to-Q_j segment crosses some footprint).
+bool wall_may_join_chain(const WallRectangle& wall, const WallFromCell& prepared, const Box3& cell_approx,
+                         const UmbraTarget& target);
+bool wall_chain_may_cover(const std::vector<WallRectangle>& walls, const Box3& cell_approx, const UmbraTarget& target);
+// Double proposal of a view-overlap link between two walls (the exact one is inside wall_chain_hides_exactly).
+bool walls_views_may_overlap(const WallRectangle& u, const WallRectangle& v, const Box3& cell_approx,
+                             const UmbraTarget& target);
 
 }  // namespace exactvis::region

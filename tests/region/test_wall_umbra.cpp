@@ -164,3 +164,167 @@ TEST(WallUmbra, TwoWallProofsSurviveRandomSegments) {
   EXPECT_GE(proofs, 30);
   EXPECT_LT(single, proofs) << "every proof was a one-wall proof: fusion untested";
 }
+
+// ---- Umbra fusion along a chain of walls (wall_chain_hides_exactly). ----
+namespace {
+
+// Random point of the closed cell and of the target region (exact rationals), as in the two-wall test.
+std::array<mpq_class, 3> random_cell_point(const RationalBox3& cell, std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> u(0, 1);
+  std::array<mpq_class, 3> p;
+  for (int k = 0; k < 3; ++k) p[k] = mpq_class(cell.lo[k].mpq()) + mpq_class(u(rng)) * mpq_class((cell.hi[k] - cell.lo[k]).mpq());
+  return p;
+}
+std::array<mpq_class, 3> random_target_point(const UmbraTarget& t, std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> u(0, 1);
+  std::vector<mpq_class> w(t.points.size());
+  mpq_class total = 0;
+  for (auto& x : w) total += (x = mpq_class(u(rng)) + mpq_class(1, 1000));
+  std::array<mpq_class, 3> q{0, 0, mpq_class(t.z_lo) + mpq_class(u(rng)) * (mpq_class(t.z_hi) - mpq_class(t.z_lo))};
+  for (std::size_t j = 0; j < w.size(); ++j) {
+    q[0] += w[j] / total * mpq_class(t.points[j].x);
+    q[1] += w[j] / total * mpq_class(t.points[j].y);
+  }
+  return q;
+}
+
+std::vector<std::pair<std::size_t, std::size_t>> path_links(std::size_t m) {
+  std::vector<std::pair<std::size_t, std::size_t>> l;
+  for (std::size_t i = 0; i + 1 < m; ++i) l.push_back({i, i + 1});
+  return l;
+}
+
+}  // namespace
+
+TEST(WallUmbra, AZigzagFacadeHidesWhatNoPairHides) {
+  // A facade with a recess: A x = 5 (y in [0, 6]), B y = 0 (x in [5, 7]), C x = 7 (y in [-6, 0]), all
+  // z in [0, 10]; the cell [0, 2] x [-5, -3] looks across it at the target [10, 12] x [3, 5]: the segment
+  // (0, -3) -> (10, 5) crosses only A, (2, -5) -> (12, 3) only C, the middle ones B.
+  const RationalBox3 cell = exact_box({{0, -5, 0}, {2, -3, 1}});
+  const std::vector<WallRectangle> chain{{5, 0, 5, 6, 0, 10}, {5, 0, 7, 0, 0, 10}, {7, -6, 7, 0, 0, 10}};
+  const UmbraTarget t = square_at(11, 4, 1, 0, 1);
+  for (std::size_t i = 0; i < 3; ++i) {
+    EXPECT_FALSE(wall_hides_exactly(chain[i], cell, t)) << i;
+    for (std::size_t j = i + 1; j < 3; ++j) EXPECT_FALSE(wall_pair_hides_exactly(chain[i], chain[j], cell, t)) << i << j;
+  }
+  EXPECT_TRUE(wall_chain_hides_exactly(chain, path_links(3), cell, t));
+  EXPECT_TRUE(wall_chain_may_cover(chain, approximate_box(cell), t));
+  // The links must be proved and connect every wall.
+  EXPECT_FALSE(wall_chain_hides_exactly(chain, {{0, 1}}, cell, t));
+  EXPECT_FALSE(wall_chain_hides_exactly(chain, {{0, 1}, {0, 2}}, cell, t)) << "A and C do not touch";
+  // A gap: C moved off B's end by 0.25 (the segments through the gap see the target).
+  std::vector<WallRectangle> gap = chain;
+  gap[2] = {7.25, -6, 7.25, 0, 0, 10};
+  gap[1] = {5, 0, 7, 0, 0, 10};
+  EXPECT_FALSE(wall_chain_hides_exactly(gap, {{0, 1}, {1, 2}}, cell, t));
+  // One wall too low for its crossing heights: no proof.
+  std::vector<WallRectangle> low = chain;
+  low[1].z_hi = 0.2;
+  EXPECT_FALSE(wall_chain_hides_exactly(low, path_links(3), cell, t));
+  EXPECT_FALSE(wall_chain_hides_exactly({}, {}, cell, t));
+  // Every proof survives random exact segments.
+  std::mt19937_64 rng(3);
+  for (int s = 0; s < 300; ++s) {
+    const auto p = random_cell_point(cell, rng), q = random_target_point(t, rng);
+    ASSERT_TRUE(segment_meets_wall(p, q, chain[0]) || segment_meets_wall(p, q, chain[1]) || segment_meets_wall(p, q, chain[2]));
+  }
+}
+
+TEST(WallUmbra, ChainProofsSurviveRandomSegments) {
+  // Random polylines of 3 to 5 walls (integer vertices, random heights), random cells and targets; every
+  // chain proof is attacked with random exact segments from the cell to the target region, each of which
+  // must meet a wall of the chain. Fusion must be exercised: some proofs hold where no wall or adjacent pair does.
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> u(0, 1);
+  int proofs = 0, beyond_pairs = 0;
+  for (int trial = 0; trial < 60000 && beyond_pairs < 10; ++trial) {
+    const std::size_t m = 3 + static_cast<std::size_t>(u(rng) * 3);
+    std::vector<WallRectangle> chain;
+    double x = 4 + std::round(3 * u(rng)), y = std::round(8 * u(rng)) - 4;
+    for (std::size_t i = 0; i < m; ++i) {
+      const double angle = (u(rng) - 0.5) * 2.6 + (i % 2 ? 0 : M_PI / 2);
+      const double len = 1 + std::round(4 * u(rng));
+      const double nx = std::round(x + len * std::cos(angle)), ny = std::round(y + len * std::sin(angle));
+      if (nx == x && ny == y) continue;
+      WallRectangle w{x, y, nx, ny, 0, 1 + std::round(6 * u(rng))};
+      if (nx < x || (nx == x && ny < y)) std::swap(w.ax, w.bx), std::swap(w.ay, w.by);
+      chain.push_back(w);
+      x = nx, y = ny;
+    }
+    if (chain.size() < 3) continue;
+    const double cx = 2 * u(rng) - 2, cy = 6 * u(rng) - 3;
+    const double side = 1 + 2 * u(rng);
+    const RationalBox3 cell = exact_box({{cx, cy, 0}, {cx + side, cy + side, 0.5 + u(rng)}});
+    const UmbraTarget t = square_at(10 + 6 * u(rng), 12 * u(rng) - 6, 0.2 + 1.2 * u(rng), 0, 2 * u(rng));
+    if (!wall_chain_hides_exactly(chain, path_links(chain.size()), cell, t)) continue;
+    ++proofs;
+    bool smaller = false;
+    for (std::size_t i = 0; i < chain.size(); ++i) {
+      smaller = smaller || wall_hides_exactly(chain[i], cell, t);
+      if (i + 1 < chain.size()) smaller = smaller || wall_pair_hides_exactly(chain[i], chain[i + 1], cell, t);
+    }
+    beyond_pairs += !smaller;
+    for (int s = 0; s < 150; ++s) {
+      const auto p = random_cell_point(cell, rng), q = random_target_point(t, rng);
+      bool met = false;
+      for (const auto& w : chain) met = met || segment_meets_wall(p, q, w);
+      ASSERT_TRUE(met) << "trial " << trial << ": a segment from the cell to the target misses the chain";
+    }
+  }
+  EXPECT_GE(proofs, 20);
+  EXPECT_GE(beyond_pairs, 10) << "every chain proof was a one-wall or pair proof: fusion untested";
+  std::cout << proofs << " chain proofs, " << beyond_pairs << " beyond every single wall and adjacent pair\n";
+}
+
+TEST(WallUmbra, TwoBuildingsOverlappingAcrossAStreetHideTogether) {
+  // Near wall A x = 5, y in [-10, 0]; far wall B x = 7, y in [-0.5, 10]; they do not touch, but from every
+  // point of the cell and of the target the end (5, 0) of A is seen in front of B (from the cell corner
+  // (1, 1) exactly at B's end (7, -0.5)): the gap is closed.
+  const RationalBox3 cell = exact_box({{0, -1, 0}, {1, 1, 1}});
+  const WallRectangle A{5, -10, 5, 0, 0, 10}, B{7, -0.5, 7, 10, 0, 10};
+  const UmbraTarget t = square_at(12, 0, 0.5, 0, 1);
+  EXPECT_FALSE(wall_hides_exactly(A, cell, t));
+  EXPECT_FALSE(wall_hides_exactly(B, cell, t));
+  EXPECT_FALSE(wall_pair_hides_exactly(A, B, cell, t)) << "no contact";
+  EXPECT_TRUE(wall_chain_hides_exactly({A, B}, {{0, 1}}, cell, t));
+  EXPECT_FALSE(wall_chain_hides_exactly({A, B}, {}, cell, t)) << "unlinked";
+  // B starting at y = 0.5: a real gap, seen through (from (0, -1) to (12.5, 0.5): y = 0.26 at x = 7).
+  EXPECT_FALSE(wall_chain_hides_exactly({A, {7, 0.5, 7, 10, 0, 10}}, {{0, 1}}, cell, t));
+  std::mt19937_64 rng(8);
+  for (int s = 0; s < 300; ++s) {
+    const auto p = random_cell_point(cell, rng), q = random_target_point(t, rng);
+    ASSERT_TRUE(segment_meets_wall(p, q, A) || segment_meets_wall(p, q, B));
+  }
+}
+
+TEST(WallUmbra, ViewOverlapProofsSurviveRandomSegments) {
+  // Two walls that do not touch (random near and far segments, integer ends), random cells and targets;
+  // every proof linked by a view overlap is attacked with random exact segments, each of which must meet
+  // one of the walls. Some proofs must hold where neither wall alone does.
+  std::mt19937_64 rng(21);
+  std::uniform_real_distribution<double> u(0, 1);
+  int proofs = 0, fused = 0;
+  for (int trial = 0; trial < 60000 && fused < 15; ++trial) {
+    auto wall = [&](double x0) {
+      const double ax = x0 + std::round(2 * u(rng)), ay = std::round(12 * u(rng)) - 6;
+      const double bx = ax + std::round(4 * u(rng)) - 2, by = ay + 1 + std::round(8 * u(rng));
+      WallRectangle w{ax, ay, bx, by, 0, 1 + std::round(6 * u(rng))};
+      if (bx < ax || (bx == ax && by < ay)) std::swap(w.ax, w.bx), std::swap(w.ay, w.by);
+      return w;
+    };
+    const WallRectangle A = wall(4), B = wall(7);
+    const double cx = 2 * u(rng) - 2, cy = 6 * u(rng) - 3, side = 0.5 + 2 * u(rng);
+    const RationalBox3 cell = exact_box({{cx, cy, 0}, {cx + side, cy + side, 0.5 + u(rng)}});
+    const UmbraTarget t = square_at(11 + 6 * u(rng), 12 * u(rng) - 6, 0.2 + u(rng), 0, 2 * u(rng));
+    if (!wall_chain_hides_exactly({A, B}, {{0, 1}}, cell, t)) continue;
+    ++proofs;
+    const bool alone = wall_hides_exactly(A, cell, t) || wall_hides_exactly(B, cell, t) || wall_pair_hides_exactly(A, B, cell, t);
+    fused += !alone;
+    for (int s = 0; s < (alone ? 10 : 150); ++s) {
+      const auto p = random_cell_point(cell, rng), q = random_target_point(t, rng);
+      ASSERT_TRUE(segment_meets_wall(p, q, A) || segment_meets_wall(p, q, B)) << "trial " << trial;
+    }
+  }
+  EXPECT_GE(fused, 15) << "too few fused proofs: the view-overlap links are untested";
+  std::cout << proofs << " two-wall proofs, " << fused << " beyond each wall and a contact pair\n";
+}
