@@ -2,14 +2,13 @@
 
 #include "kernel/filtered_predicate.hpp"
 #include "kernel/predicate_counters.hpp"
+#include "region/cone_vector6.hpp"
 
 #include <cmath>
 #include <limits>
 #include <optional>
 
 namespace exactvis::region {
-
-namespace {
 
 // sign(sum x[i] * y[i]) over n <= 6 terms of double approximations x~ = x (1 + d), |d| < 2^-52 = 2u, when
 // certified. Error: each product is off by < 5u (1 + 2^-40) |x~ y~| (two input errors and one rounding),
@@ -32,15 +31,19 @@ std::optional<int> filtered_sum_sign(const double* x, const double* y, int n) {
   return std::nullopt;
 }
 
+namespace {
+
 template <class Exact>
 int counted_sign(PredicateCounter& counter, const std::optional<int>& filtered, Exact&& exact) {
   std::atomic<std::uint64_t>* counts = counter.thread_counts();
-  detail::bump(counts[0]);
+  exactvis::detail::bump(counts[0]);
   if (filtered && filter_enabled()) {
-    detail::bump(counts[1 + static_cast<int>(FilterLayer::SemiStatic)]);
+    exactvis::detail::bump(counts[1 + static_cast<int>(FilterLayer::SemiStatic)]);
+    count_cone_sign(ConeLayer::Filter);
     return *filtered;
   }
-  detail::bump(counts[1 + static_cast<int>(FilterLayer::Exact)]);
+  exactvis::detail::bump(counts[1 + static_cast<int>(FilterLayer::Exact)]);
+  count_cone_sign(ConeLayer::Gmp);
   return sgn(exact());
 }
 

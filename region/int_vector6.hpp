@@ -10,6 +10,7 @@
 #include <gmpxx.h>
 
 #include <array>
+#include <optional>
 
 namespace exactvis::region {
 
@@ -34,6 +35,10 @@ Approx6 approximate(const IntVec6& v);
 // certified when |sum| > 2^-49 * sum of |products|), the exact GMP evaluation when it cannot decide or when
 // kernel/filtered_predicate's filter is disabled. Counted as the predicates "cone_dot", "cone_side" and
 // "cone_plucker_form" (kernel/predicate_counters.hpp). Cost: a few flops; malloc-free unless exact.
+// The semi-static filter itself: sign(sum x[i] * y[i]) over n <= 6 terms of such approximations when the
+// error bound certifies it, else std::nullopt (docs/theory.md §5.4).
+std::optional<int> filtered_sum_sign(const double* x, const double* y, int n);
+
 int dot_sign(const IntVec6& a, const Approx6& aa, const IntVec6& b, const Approx6& bb);
 int side_sign(const IntVec6& a, const Approx6& aa, const IntVec6& b, const Approx6& bb);
 int plucker_form_sign(const IntVec6& a, const Approx6& aa);

@@ -83,7 +83,7 @@ class PairQuery {
   bool touches(const PolyhedralCone6& cone, const ShaftOccluder& occ) const {
     bool plus = true, minus = true;
     for (std::size_t k = 0; k < occ.edges.size(); ++k) {
-      const HalfspaceRelation r = relation_to_halfspace(cone, occ.edges[k], occ.edges_approx[k]);
+      const HalfspaceRelation r = relation_to_halfspace(cone, occ.edges[k]);
       if (r == HalfspaceRelation::Outside) plus = false;
       if (r == HalfspaceRelation::Inside) minus = false;
       if (!plus && !minus) return false;
@@ -100,19 +100,13 @@ class PairQuery {
       return;
     }
     if (k == occ.edges.size()) return;  // every edge passed on one side: the lines hit the occluder
-    const IntVec6& w = occ.edges[k];
-    const HalfspaceRelation r = relation_to_halfspace(cone, w, occ.edges_approx[k]);
+    const ConeVector6& w = occ.edges[k];
+    const HalfspaceRelation r = relation_to_halfspace(cone, w);
     if (r == HalfspaceRelation::Inside) return split(std::move(cone), std::move(t), occ, k + 1, true, neg, out);
     if (r == HalfspaceRelation::Outside) return split(std::move(cone), std::move(t), occ, k + 1, pos, true, out);
     for (int s : {+1, -1}) {
-      IntVec6 ws = w;
-      Approx6 wa = occ.edges_approx[k];
-      if (s < 0) {
-        for (auto& c : ws) c = -c;
-        for (auto& c : wa) c = -c;
-      }
       ++stats_.splits;
-      auto part = intersect_open_halfspace(cone, ws, wa);
+      auto part = intersect_open_halfspace(cone, s > 0 ? w : w.negated());
       if (!part) continue;
       ++stats_.cones_created;
       RealLineTest pt = test(*part);

@@ -71,10 +71,23 @@ std::optional<ShaftOccluder> clipped_occluder(const std::array<RationalPoint3, 3
   if (is_degenerate(clipped)) return std::nullopt;
   if (lies_in_plane(clipped, pair.source_plane) || lies_in_plane(clipped, pair.target_plane)) return std::nullopt;
   ShaftOccluder occ;
-  occ.corners = tri;
-  for (std::size_t i = 0; i < clipped.size(); ++i) {
-    occ.edges.push_back(side_functional(line_through(clipped[i], clipped[(i + 1) % clipped.size()])));
-    occ.edges_approx.push_back(approximate(occ.edges.back()));
+  for (std::size_t i = 0; i < clipped.size(); ++i)
+    occ.edges.emplace_back(side_functional(line_through(clipped[i], clipped[(i + 1) % clipped.size()])));
+  return occ;
+}
+
+// The same for a triangle with double corners strictly inside both polygon planes (the caller proved the six
+// signs): clipping keeps the triangle as it is (clip_polygon keeps vertices of value > 0 in order and adds
+// none), it is not degenerate unless collinear, and it lies in neither plane. The edge functionals come from
+// the fixed layer where it can, else from the rational line (the same vectors either way).
+std::optional<ShaftOccluder> unclipped_occluder(const std::array<Point3, 3>& c) {
+  if (collinear(c[0], c[1], c[2])) return std::nullopt;
+  ShaftOccluder occ;
+  for (std::size_t i = 0; i < 3; ++i) {
+    const Point3 &a = c[i], &b = c[(i + 1) % 3];
+    ConeVector6 e;
+    if (!side_functional_of_doubles(a, b, e)) e = ConeVector6(side_functional(line_through(to_rational(a), to_rational(b))));
+    occ.edges.push_back(std::move(e));
   }
   return occ;
 }
@@ -89,20 +102,27 @@ std::vector<ShaftOccluder> shaft_occluders(const Scene& scene, const std::vector
   for (const std::int64_t idx : candidates) {
     if (idx == target) continue;
     const auto& st = scene.triangles[idx];
-    bool culled = false;
-    for (const auto& pl : planes) {
+    const std::array<Point3, 3> c{scene.corner(st, 0), scene.corner(st, 1), scene.corner(st, 2)};
+    // The polygon planes (planes[0], planes[1]) first, all three corners: strictly inside both, the clipping
+    // shortcut applies.
+    bool inside_wedge = true, culled = false;
+    for (std::size_t k = 0; k < 2 && !culled; ++k) {
+      int positive = 0;
+      for (const auto& x : c) positive += planes[k].side(x) == Sign::Positive ? 1 : 0;
+      inside_wedge = inside_wedge && positive == 3;
+      culled = positive == 0;
+    }
+    for (std::size_t k = 2; k < planes.size() && !culled; ++k) {
+      const auto& pl = planes[k];
       // Entirely on the closed outer side of a supporting plane: meets the shaft at most in that plane,
       // which only a measure-zero set of stabbing segments touches (docs/theory.md §5.2).
-      if (pl.side(scene.corner(st, 0)) != Sign::Positive && pl.side(scene.corner(st, 1)) != Sign::Positive &&
-          pl.side(scene.corner(st, 2)) != Sign::Positive) {
-        culled = true;
-        break;
-      }
+      culled = pl.side(c[0]) != Sign::Positive && pl.side(c[1]) != Sign::Positive && pl.side(c[2]) != Sign::Positive;
     }
     if (culled) continue;
-    if (auto occ = clipped_occluder(triangle_points(scene, idx), pair)) {
+    auto occ = inside_wedge ? unclipped_occluder(c) : clipped_occluder(triangle_points(scene, idx), pair);
+    if (occ) {
       occ->triangle = idx;
-      occ->corners_d = {scene.corner(st, 0), scene.corner(st, 1), scene.corner(st, 2)};
+      occ->corners_d = c;
       out.push_back(std::move(*occ));
     }
   }

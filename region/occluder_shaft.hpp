@@ -3,7 +3,7 @@
 // segment from S' to T', culled against the shaft conv(S' u T') and clipped to the wedge between the two
 // polygon planes, each with the side functionals of its clipped polygon's edges (the CSG subtracts the lines
 // passing through all of them on one side).
-#include "region/int_vector6.hpp"
+#include "region/cone_vector6.hpp"
 #include "region/stabbing_pair.hpp"
 
 #include <array>
@@ -14,10 +14,8 @@ namespace exactvis::region {
 
 struct ShaftOccluder {
   std::int64_t triangle = -1;  // index into Scene::triangles (or into the exact triangle list)
-  std::array<RationalPoint3, 3> corners;
-  std::array<Point3, 3> corners_d;  // the same corners as input doubles
-  std::vector<IntVec6> edges;  // functionals of the clipped polygon's edges, in loop order
-  std::vector<Approx6> edges_approx;  // approximate(edges[i]) (the float filter of the CSG's signs)
+  std::array<Point3, 3> corners_d;  // the triangle's corners as doubles (exactly the input for scene triangles)
+  std::vector<ConeVector6> edges;  // functionals of the clipped polygon's edges, in loop order
   int blocked_samples = 0;     // sample segments it blocked (orders the CSG; set by the caller)
 };
 
@@ -29,6 +27,9 @@ std::vector<Plane3> shaft_planes(const StabbingPair& pair);
 // side of a shaft plane and whose part between the two polygon planes has positive area off both planes
 // (culling the others changes only a measure-zero set of segments, docs/theory.md §5.2), in candidate order.
 // Exact (a filtered side test per corner and plane).
+// Shortcut (docs/theory.md §5.4): a triangle whose three corners the filtered side tests put strictly inside
+// both polygon planes is its own clipped polygon; its edge functionals are then computed from the double
+// corners in the fixed layer (side_functional_of_doubles), without rational clipping. Same output.
 std::vector<ShaftOccluder> shaft_occluders(const Scene& scene, const std::vector<std::int64_t>& candidates,
                                            std::int64_t target, const StabbingPair& pair);
 

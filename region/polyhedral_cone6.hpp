@@ -7,7 +7,7 @@
 // Splitting by one more hyperplane is one step of the double description method (Motzkin et al.; Fukuda and
 // Prodon 1996): rays on the kept side stay, new rays are positive combinations of adjacent pairs across the
 // hyperplane (combinatorial adjacency test).
-#include "region/int_vector6.hpp"
+#include "region/cone_vector6.hpp"
 
 #include <boost/dynamic_bitset.hpp>
 
@@ -16,16 +16,15 @@
 
 namespace exactvis::region {
 
+// Vectors are ConeVector6 (region/cone_vector6): int64 components where they fit, GMP beyond, each with its
+// double approximation, so that copying a cone and deciding its signs allocate nothing in the common case.
 struct PolyhedralCone6 {
   // Open cone K = {x : w . x > 0 for every w in constraints}. Invariant: K is non-empty (full-dimensional).
-  std::vector<IntVec6> constraints;
+  std::vector<ConeVector6> constraints;
   // Closure of K = cone(rays) + span(lineality).
-  std::vector<IntVec6> rays;
+  std::vector<ConeVector6> rays;
   std::vector<boost::dynamic_bitset<>> incidence;  // incidence[r][i] <=> constraints[i] . rays[r] == 0
-  std::vector<IntVec6> lineality;                  // basis; every constraint vanishes on it
-  // approximate() of each ray and lineality vector, index for index (the float filter of the signs below).
-  std::vector<Approx6> rays_approx;
-  std::vector<Approx6> lineality_approx;
+  std::vector<ConeVector6> lineality;              // basis; every constraint vanishes on it
 };
 
 // R^6 itself (no constraint; lineality = the unit vectors).
@@ -37,16 +36,15 @@ enum class HalfspaceRelation {
   Crossing,  // both sides
 };
 
-// Where the closure of K lies with respect to the hyperplane w . x = 0.
-// w_approx = approximate(w) (the overload without it computes it). Exact (filtered signs of w . r).
+// Where the closure of K lies with respect to the hyperplane w . x = 0. Exact (layered signs of w . r).
+HalfspaceRelation relation_to_halfspace(const PolyhedralCone6& cone, const ConeVector6& w);
 HalfspaceRelation relation_to_halfspace(const PolyhedralCone6& cone, const IntVec6& w);
-HalfspaceRelation relation_to_halfspace(const PolyhedralCone6& cone, const IntVec6& w, const Approx6& w_approx);
 
 // K intersected with the open halfspace {w . x > 0}; std::nullopt when that is empty. The ray signs are
-// filtered; the exact values w . r are computed only for the rays that are combined into new ones.
+// layered (filter, fixed, gmp); new rays are eliminate()d (fixed layer unless it overflows), and only for
+// the adjacent pairs that are combined.
+std::optional<PolyhedralCone6> intersect_open_halfspace(const PolyhedralCone6& cone, const ConeVector6& w);
 std::optional<PolyhedralCone6> intersect_open_halfspace(const PolyhedralCone6& cone, const IntVec6& w);
-std::optional<PolyhedralCone6> intersect_open_halfspace(const PolyhedralCone6& cone, const IntVec6& w,
-                                                        const Approx6& w_approx);
 
 // An interior point of K (sum of the rays; lineality adds nothing needed). Requires rays non-empty or
 // lineality == whole space.

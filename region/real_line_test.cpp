@@ -72,30 +72,36 @@ struct SignSearch {
   bool have_pos = false, have_neg = false;
   IntVec6 pos{}, neg{};
   bool done() const { return have_pos && have_neg; }
-  void offer(const IntVec6& x) { offer(x, approximate(x)); }
-  void offer(const IntVec6& x, const Approx6& xa) {
+  void offer(const IntVec6& x) {
     if (done()) return;
-    const int s = plucker_form_sign(x, xa);
+    take(plucker_form_sign(x, approximate(x)), [&] { return x; });
+  }
+  void offer(const ConeVector6& x) {
+    if (done()) return;
+    take(plucker_form_sign(x), [&] { return x.to_gmp(); });
+  }
+  template <class Value>
+  void take(int s, Value&& value) {
     if (s > 0 && !have_pos) {
       have_pos = true;
-      pos = x;
+      pos = value();
     } else if (s < 0 && !have_neg) {
       have_neg = true;
-      neg = x;
+      neg = value();
     }
   }
 };
 
 // A point a*ri + b*rj (a, b >= 0) where q has sign `want` (+1/-1), if the 2D cone has one.
-// The signs are filtered first (ri, rj with their approximations); exact values only for a combination.
-std::optional<IntVec6> pair_point(const IntVec6& ri, const Approx6& ria, const IntVec6& rj, const Approx6& rja,
-                                  int want) {
+// The signs are layered first (filter, fixed, gmp); GMP values only for a combination.
+std::optional<IntVec6> pair_point(const ConeVector6& rci, const ConeVector6& rcj, int want) {
   // want*q(a ri + b rj) = a^2 qi + a b s + b^2 qj ; look for a value > 0.
-  const int sqi = want * plucker_form_sign(ri, ria);
-  if (sqi > 0) return ri;
-  const int sqj = want * plucker_form_sign(rj, rja);
-  if (sqj > 0) return rj;
-  if (want * side_sign(ri, ria, rj, rja) <= 0) return std::nullopt;
+  const int sqi = want * plucker_form_sign(rci);
+  if (sqi > 0) return rci.to_gmp();
+  const int sqj = want * plucker_form_sign(rcj);
+  if (sqj > 0) return rcj.to_gmp();
+  if (want * side_sign(rci, rcj) <= 0) return std::nullopt;
+  const IntVec6 ri = rci.to_gmp(), rj = rcj.to_gmp();
   const mpz_class qi = want * plucker_form(ri), qj = want * plucker_form(rj), s = want * side6(ri, rj);
   if (sgn(qi) == 0) {  // a = 1, b large: b s + b^2 qj > 0 for b = 1 + floor(-qj... ) pick b with b (s + b qj) > 0
     if (sgn(qj) == 0) return combine(1, ri, 1, rj);
@@ -127,7 +133,8 @@ RealLineTest test_real_lines(const PolyhedralCone6& cone) {
   // For the line-set cones of visibility queries L is spanned by one real line (the line common to the
   // planes of S and T), so this step always decides; other cones with lineality raise logic_error.
   if (!cone.lineality.empty()) {
-    const auto& lin = cone.lineality;
+    std::vector<IntVec6> lin;
+    for (const auto& l : cone.lineality) lin.push_back(l.to_gmp());
     std::vector<IntVec6> dirs = lin;
     for (std::size_t i = 0; i < lin.size(); ++i)
       for (std::size_t j = i + 1; j < lin.size(); ++j) {
@@ -152,7 +159,7 @@ RealLineTest test_real_lines(const PolyhedralCone6& cone) {
       IntVec6 cc = c;
       mpz_class s = side6(cc, b);
       for (std::size_t j = 0; sgn(s) == 0 && j < cone.rays.size() + lin.size(); ++j) {
-        const IntVec6& g = j < cone.rays.size() ? cone.rays[j] : lin[j - cone.rays.size()];
+        const IntVec6 g = j < cone.rays.size() ? cone.rays[j].to_gmp() : lin[j - cone.rays.size()];
         const IntVec6 c2 = combine(1, c, 1, g);
         if (sgn(side6(c2, b)) != 0) {
           cc = c2;
@@ -170,17 +177,17 @@ RealLineTest test_real_lines(const PolyhedralCone6& cone) {
   }
 
   // (2) Signs at the rays.
-  for (std::size_t r = 0; r < cone.rays.size(); ++r) search.offer(cone.rays[r], cone.rays_approx[r]);
+  for (const auto& r : cone.rays) search.offer(r);
   if (search.done()) return finish(2);
 
   // (3) Two-dimensional faces spanned by ray pairs (sufficient, cheap).
   for (std::size_t i = 0; i < cone.rays.size() && !search.done(); ++i)
     for (std::size_t j = i + 1; j < cone.rays.size() && !search.done(); ++j) {
       if (!search.have_pos)
-        if (auto p = pair_point(cone.rays[i], cone.rays_approx[i], cone.rays[j], cone.rays_approx[j], +1))
+        if (auto p = pair_point(cone.rays[i], cone.rays[j], +1))
           search.offer(*p);
       if (!search.have_neg)
-        if (auto p = pair_point(cone.rays[i], cone.rays_approx[i], cone.rays[j], cone.rays_approx[j], -1))
+        if (auto p = pair_point(cone.rays[i], cone.rays[j], -1))
           search.offer(*p);
     }
   if (search.done()) return finish(3);
@@ -191,18 +198,17 @@ RealLineTest test_real_lines(const PolyhedralCone6& cone) {
   for (std::size_t i = 0; i < cone.rays.size() && pairs_conclusive; ++i)
     for (std::size_t j = i + 1; j < cone.rays.size() && pairs_conclusive; ++j) {
       const int want = search.have_pos ? -1 : +1;
-      if (want * side_sign(cone.rays[i], cone.rays_approx[i], cone.rays[j], cone.rays_approx[j]) > 0)
+      if (want * side_sign(cone.rays[i], cone.rays[j]) > 0)
         pairs_conclusive = false;
     }
   if (pairs_conclusive) return finish(3);
 
   // (4) Stationary points of q on every face of dimension >= 2 (faces = ray sets, reached by intersecting
   // with constraint zero sets).
-  IntVec6 h;
-  for (auto& c : h) c = 0;
-  for (const auto& w : cone.constraints)
-    for (int k = 0; k < 6; ++k) h[k] += w[k];
+  const IntVec6 h = sum(cone.constraints);
   const std::size_t nr = cone.rays.size();
+  std::vector<IntVec6> rays;
+  for (const auto& r : cone.rays) rays.push_back(r.to_gmp());
   boost::dynamic_bitset<> all(nr);
   all.set();
   std::set<boost::dynamic_bitset<>> seen{all};
@@ -213,7 +219,7 @@ RealLineTest test_real_lines(const PolyhedralCone6& cone) {
     ++out.faces_examined;
     std::vector<const IntVec6*> members;
     for (std::size_t r = 0; r < nr; ++r)
-      if (face[r]) members.push_back(&cone.rays[r]);
+      if (face[r]) members.push_back(&rays[r]);
     const auto idx = independent_subset(members);
     const std::size_t k = idx.size();
     if (k >= 2) {

@@ -54,7 +54,7 @@ std::optional<Witness> line_in_cone(const PolyhedralCone6& cone, const RealLineT
                                     std::mt19937_64& rng) {
   IntVec6 c = interior_point(cone);
   if (!cone.rays.empty()) {  // vary the interior point between attempts
-    const auto& r = cone.rays[rng() % cone.rays.size()];
+    const IntVec6 r = cone.rays[rng() % cone.rays.size()].to_gmp();
     const long factor = 1 + static_cast<long>(rng() % 7);
     for (int k = 0; k < 6; ++k) c[k] += r[k] * factor;
   }

@@ -20,6 +20,13 @@ IntVec6 random_vec(std::mt19937_64& rng, int range) {
   return v;
 }
 
+// The cone's vectors as GMP integers (ConeVector6::to_gmp: the stored integers, whatever their layer).
+std::vector<IntVec6> gmp_all(const std::vector<ConeVector6>& vs) {
+  std::vector<IntVec6> out;
+  for (const auto& v : vs) out.push_back(v.to_gmp());
+  return out;
+}
+
 int rank_of(std::vector<IntVec6> rows) {
   int rank = 0;
   std::vector<std::array<mpq_class, 6>> m;
@@ -62,17 +69,17 @@ TEST(PolyhedralCone6, GeneratorsSatisfyConstraintsAndRaysAreExtreme) {
     ++nonempty;
     // Every generator lies in the closure of every constraint ever added (also the dropped redundant ones).
     for (const auto& w : all) {
-      for (const auto& r : cone->rays) EXPECT_GE(sgn(dot(w, r)), 0);
-      for (const auto& b : cone->lineality) EXPECT_EQ(sgn(dot(w, b)), 0);
+      for (const auto& r : gmp_all(cone->rays)) EXPECT_GE(sgn(dot(w, r)), 0);
+      for (const auto& b : gmp_all(cone->lineality)) EXPECT_EQ(sgn(dot(w, b)), 0);
     }
     // Full dimension.
-    std::vector<IntVec6> gens = cone->rays;
-    gens.insert(gens.end(), cone->lineality.begin(), cone->lineality.end());
+    std::vector<IntVec6> gens = gmp_all(cone->rays);
+    for (const auto& b : gmp_all(cone->lineality)) gens.push_back(b);
     EXPECT_EQ(rank_of(gens), 6);
     // Extremality: the constraints tight at a ray, with the lineality, have rank 5 - dim(lineality) ... i.e.
     // the ray spans, modulo lineality, a 1-dimensional face.
     const int dim = 6 - static_cast<int>(cone->lineality.size());
-    for (const auto& r : cone->rays) {
+    for (const auto& r : gmp_all(cone->rays)) {
       std::vector<IntVec6> tight;
       for (const auto& w : all)
         if (sgn(dot(w, r)) == 0) tight.push_back(w);
@@ -81,7 +88,7 @@ TEST(PolyhedralCone6, GeneratorsSatisfyConstraintsAndRaysAreExtreme) {
     // Incidence bits agree with the kept constraints.
     for (std::size_t r = 0; r < cone->rays.size(); ++r)
       for (std::size_t i = 0; i < cone->constraints.size(); ++i)
-        EXPECT_EQ(cone->incidence[r][i], sgn(dot(cone->constraints[i], cone->rays[r])) == 0);
+        EXPECT_EQ(cone->incidence[r][i], sgn(dot(cone->constraints[i].to_gmp(), cone->rays[r].to_gmp())) == 0);
     // The interior point is strictly inside every constraint.
     const IntVec6 c = interior_point(*cone);
     for (const auto& w : all) EXPECT_GT(sgn(dot(w, c)), 0);
@@ -195,7 +202,7 @@ TEST(PolyhedralCone6, RaysMatchBruteForceEnumeration) {
     }
     if (!cone || !cone->lineality.empty()) continue;
     std::set<std::vector<long>> dd;
-    for (auto r : cone->rays) {
+    for (auto r : gmp_all(cone->rays)) {
       normalize(r);
       std::vector<long> key;
       for (const auto& c : r) key.push_back(c.get_si());

@@ -1,0 +1,119 @@
+// The shaft occluders of region/occluder_shaft with the clipping shortcut (triangles strictly inside both
+// polygon planes keep their corners; edge functionals from the double corners in the fixed layer) against the
+// same culling done with rational clipping throughout (the exact-triangle overload, which never takes the
+// shortcut) and against edge functionals computed here from rational Plücker coordinates with GMP (mpq/mpz
+// only): the same occluders, in the same order, with the same integer vectors. Random triangles on the 1/64
+// grid of the scene generators and with arbitrary double coordinates, sources from cell faces and random
+// polygons, so that both the shortcut and the clipping path run.
+#include "region/occluder_shaft.hpp"
+
+#include "kernel/predicates.hpp"
+#include "region/stabbing_pair.hpp"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+using namespace exactvis;
+using namespace exactvis::region;
+
+namespace {
+
+using Z6 = std::array<mpz_class, 6>;
+
+// Oracle: the side functional (m, d) of the line p -> q, primitive integers (positive factor), GMP only.
+Z6 oracle_functional(const RationalPoint3& p, const RationalPoint3& q) {
+  const mpq_class px(p.x.mpq()), py(p.y.mpq()), pz(p.z.mpq()), qx(q.x.mpq()), qy(q.y.mpq()), qz(q.z.mpq());
+  const std::array<mpq_class, 6> f{py * qz - pz * qy, pz * qx - px * qz, px * qy - py * qx, qx - px, qy - py, qz - pz};
+  mpz_class l = 1, g = 0;
+  for (const auto& c : f) mpz_lcm(l.get_mpz_t(), l.get_mpz_t(), c.get_den_mpz_t());
+  Z6 v;
+  for (std::size_t k = 0; k < 6; ++k) {
+    const mpq_class s = f[k] * l;
+    v[k] = s.get_num();
+    mpz_gcd(g.get_mpz_t(), g.get_mpz_t(), v[k].get_mpz_t());
+  }
+  for (auto& c : v) c /= g;
+  return v;
+}
+
+struct Fixture {
+  Scene scene;
+  std::vector<std::array<RationalPoint3, 3>> exact;  // the same triangles as rationals
+};
+
+Fixture random_scene(std::mt19937_64& rng, bool grid, int n) {
+  Fixture f;
+  std::uniform_int_distribution<int> g(-640, 640);
+  std::uniform_real_distribution<double> u(-10, 10);
+  auto coord = [&] { return grid ? g(rng) / 64.0 : u(rng); };
+  while (static_cast<int>(f.scene.triangles.size()) < n) {
+    const Point3 a{coord(), coord(), coord()}, b{coord(), coord(), coord()}, c{coord(), coord(), coord()};
+    if (collinear(a, b, c)) continue;
+    const int v0 = static_cast<int>(f.scene.vertices.size());
+    f.scene.vertices.insert(f.scene.vertices.end(), {a, b, c});
+    SceneTriangle t;
+    t.id = static_cast<std::int64_t>(f.scene.triangles.size());
+    t.v = {v0, v0 + 1, v0 + 2};
+    f.scene.triangles.push_back(t);
+    f.exact.push_back({to_rational(a), to_rational(b), to_rational(c)});
+  }
+  f.scene.objects.push_back({"all"});
+  return f;
+}
+
+}  // namespace
+
+TEST(OccluderShaft, ShortcutGivesTheRationalClippingsOccluders) {
+  std::mt19937_64 rng(2026);
+  int pairs = 0, occluders = 0, compared_edges = 0;
+  const ConeLayerCounts before = cone_layer_counts();
+  for (int trial = 0; trial < 60; ++trial) {
+    const bool grid = trial % 3 != 2;
+    Fixture f = random_scene(rng, grid, 40);
+    // Source: a face of a small box (cell-like) or a random triangle; target: a scene triangle.
+    Polygon3 source;
+    if (trial % 2 == 0) {
+      const Exact z(static_cast<long>(rng() % 5) - 2);
+      source = {{Exact(-1), Exact(-1), z}, {Exact(1), Exact(-1), z}, {Exact(1), Exact(1), z}, {Exact(-1), Exact(1), z}};
+    } else {
+      source = {f.exact[0][0], f.exact[0][1], f.exact[0][2]};
+    }
+    const std::int64_t target = 1 + static_cast<std::int64_t>(rng() % 39);
+    std::vector<std::int64_t> candidates;
+    std::vector<std::array<RationalPoint3, 3>> others;
+    std::vector<std::int64_t> other_index;
+    for (std::int64_t i = 0; i < 40; ++i) {
+      candidates.push_back(i);
+      if (i == target) continue;
+      others.push_back(f.exact[static_cast<std::size_t>(i)]);
+      other_index.push_back(i);
+    }
+    for (const auto& pair : stabbing_pairs(source, f.exact[static_cast<std::size_t>(target)])) {
+      ++pairs;
+      const auto fast = shaft_occluders(f.scene, candidates, target, pair);
+      const auto slow = shaft_occluders(others, pair);
+      ASSERT_EQ(fast.size(), slow.size()) << "trial " << trial;
+      for (std::size_t k = 0; k < fast.size(); ++k) {
+        ++occluders;
+        EXPECT_EQ(fast[k].triangle, other_index[static_cast<std::size_t>(slow[k].triangle)]);
+        ASSERT_EQ(fast[k].edges.size(), slow[k].edges.size());
+        for (std::size_t e = 0; e < fast[k].edges.size(); ++e) EXPECT_EQ(fast[k].edges[e], slow[k].edges[e]);
+        // Unclipped triangles (three edges): the oracle's functionals of the corner loop, in order.
+        if (fast[k].edges.size() == 3) {
+          const auto& t = f.exact[static_cast<std::size_t>(fast[k].triangle)];
+          bool all_match = true;
+          for (std::size_t e = 0; e < 3; ++e)
+            all_match = all_match && fast[k].edges[e].to_gmp() == oracle_functional(t[e], t[(e + 1) % 3]);
+          compared_edges += all_match ? 1 : 0;
+        }
+      }
+    }
+  }
+  const ConeLayerCounts after = cone_layer_counts();
+  EXPECT_GT(pairs, 40);
+  EXPECT_GT(occluders, 200);
+  EXPECT_GT(compared_edges, 50);  // unclipped triangles whose edges are the corner loop's lines
+  // The shortcut ran (fixed-layer edge functionals).
+  EXPECT_GT(after.constructions[1] - before.constructions[1], 100u);
+}
