@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <optional>
 #include <type_traits>
@@ -229,25 +230,20 @@ std::optional<std::vector<std::int64_t>> exact_cover_candidates(const TriangleIn
   return cand;
 }
 
-// The same cover from interval enclosures only (no rational constructed): the exit parameter is bounded
-// above by the smallest sup of (face_k - o_k) / d_k over the axes whose direction enclosure excludes 0 (a
-// larger bound only adds candidates), and the piece ends o + s_i d are enclosed by interval arithmetic, so
-// each piece box contains the exact segment [o + s_i d, o + s_i+1 d]. Whether the ray leaves the box at once
-// (exit <= 0) is decided exactly by signs: exit > 0 iff sign(face_k - o_k) = sign(d_k) on every axis with
-// d_k != 0 (the interval decides, the rationals only when it cannot). nullopt: no interval bound (the caller
-// takes the exact path); an empty vector: the ray leaves at once.
-std::optional<std::vector<std::int64_t>> interval_cover_candidates(const TriangleIndex& index, const Box3& box,
-                                                                   const Vec3<Exact>& origin, const Vec3<Exact>& dir) {
+}  // namespace
+
+std::optional<std::vector<std::int64_t>> ray_cover_candidates(const TriangleIndex& index, const Box3& box,
+                                                              const RayEnclosure& ray,
+                                                              const std::function<Sign(int, double)>& gap_sign) {
   using I = CGAL::Interval_nt<>;
   std::array<I, 3> o, d;
   for (int k = 0; k < 3; ++k) {
-    const auto oi = enclosing_interval(origin[k]), di = enclosing_interval(dir[k]);
-    o[k] = I(oi.first, oi.second);
-    d[k] = I(di.first, di.second);
+    o[k] = I(ray.origin[k].first, ray.origin[k].second);
+    d[k] = I(ray.dir[k].first, ray.dir[k].second);
   }
   double exit_hi = std::numeric_limits<double>::infinity();
   for (int k = 0; k < 3; ++k) {
-    const Sign sd = exact_sign(dir[k]);
+    const Sign sd = ray.dir_sign[k];
     if (sd == Sign::Zero) continue;
     const double face = box_face(box, k, sd == Sign::Positive);
     // sign(face - o_k) must equal sign(d_k), else exit <= 0.
@@ -255,7 +251,7 @@ std::optional<std::vector<std::int64_t>> interval_cover_candidates(const Triangl
     Sign sg;
     if (gap.inf() > 0) sg = Sign::Positive;
     else if (gap.sup() < 0) sg = Sign::Negative;
-    else sg = exact_sign(Exact(face) - origin[k]);
+    else sg = gap_sign(k, face);
     if (sg != sd) return std::vector<std::int64_t>{};
     if (d[k].inf() > 0 || d[k].sup() < 0) exit_hi = std::min(exit_hi, (gap / d[k]).sup());
   }
@@ -279,6 +275,22 @@ std::optional<std::vector<std::int64_t>> interval_cover_candidates(const Triangl
     prev = cur;
   }
   return cand;
+}
+
+namespace {
+
+// The cover of a rational ray from its interval enclosures (ray_cover_candidates; no rational constructed,
+// the exact signs of face_k - o_k only where their intervals cannot decide).
+std::optional<std::vector<std::int64_t>> interval_cover_candidates(const TriangleIndex& index, const Box3& box,
+                                                                   const Vec3<Exact>& origin, const Vec3<Exact>& dir) {
+  RayEnclosure ray;
+  for (int k = 0; k < 3; ++k) {
+    ray.origin[k] = enclosing_interval(origin[k]);
+    ray.dir[k] = enclosing_interval(dir[k]);
+    ray.dir_sign[k] = exact_sign(dir[k]);
+  }
+  return ray_cover_candidates(index, box, ray,
+                              [&](int k, double face) { return exact_sign(Exact(face) - origin[k]); });
 }
 
 }  // namespace

@@ -4,12 +4,62 @@
 #include "kernel/rational_between.hpp"
 #include "kernel/segment_triangle_intersection.hpp"
 
+#include <CGAL/Interval_nt.h>
+
+#include <algorithm>
+#include <numeric>
 #include <optional>
 
 namespace exactvis {
 namespace {
 
 using R = RootNumber;
+using I = CGAL::Interval_nt<>;
+using IVec = std::array<I, 3>;
+
+IVec enclose(const Vec3<R>& v) {
+  IVec r;
+  for (int k = 0; k < 3; ++k) {
+    const auto p = CGAL::to_interval(v[k]);
+    r[k] = I(p.first, p.second);
+  }
+  return r;
+}
+IVec enclose(const Point3& p) { return {I(p.x), I(p.y), I(p.z)}; }
+IVec sub(const IVec& a, const IVec& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+IVec cross(const IVec& a, const IVec& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+I dot(const IVec& a, const IVec& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+bool certainly_positive(const I& x) { return x.inf() > 0; }
+bool certainly_negative(const I& x) { return x.sup() < 0; }
+
+// Interval filter of first_parameter (below): true only when the exact test is certain to find no point of
+// the open ray {o + s d : s > 0} in the closed triangle (a, b, c) -- or, with `to` (= o + d), none with
+// 0 < s < 1. It decides only rays crossing the plane (sign(n . d) certain): s = -n.(o - a) / n.d must be > 0
+// (and < 1), and the crossing point's barycentric coordinate opposite c_k+2 has the sign of
+// det[c_k - o, c_k+1 - o, d] times sign(n . d) (docs/theory.md section 6, "Maximal free segments"), so a
+// certain opposite sign excludes it. Everything else (parallel, coplanar, ambiguous) returns false.
+bool certainly_misses(const IVec& o, const IVec& d, const IVec* to, const Point3& a, const Point3& b,
+                      const Point3& c) {
+  const IVec ia = enclose(a), ib = enclose(b), ic = enclose(c);
+  const IVec n = cross(sub(ib, ia), sub(ic, ia));
+  const I h1 = dot(n, d);
+  const bool up = certainly_positive(h1);
+  if (!up && !certainly_negative(h1)) return false;
+  const I h0 = dot(n, sub(o, ia));  // s = -h0 / h1 > 0 needs sign(h0) = -sign(h1)
+  if (up ? certainly_positive(h0) : certainly_negative(h0)) return true;
+  if (to) {  // s < 1 needs sign(n . (to - a)) = sign(h1)
+    const I h = dot(n, sub(*to, ia));
+    if (up ? certainly_negative(h) : certainly_positive(h)) return true;
+  }
+  const IVec* v[3] = {&ia, &ib, &ic};
+  for (int k = 0; k < 3; ++k) {
+    const I det = dot(cross(sub(*v[k], o), sub(*v[(k + 1) % 3], o)), d);
+    if (up ? certainly_negative(det) : certainly_positive(det)) return true;
+  }
+  return false;
+}
 
 Vec3<R> lift(const Point3& p) { return {R(Exact(p.x)), R(Exact(p.y)), R(Exact(p.z))}; }
 
@@ -67,7 +117,9 @@ bool open_segment_meets_triangle(const Vec3<RootNumber>& from, const Vec3<RootNu
     return open_segment_meets_closed_triangle(f, t, RationalPoint3{Exact(a.x), Exact(a.y), Exact(a.z)},
                                               RationalPoint3{Exact(b.x), Exact(b.y), Exact(b.z)},
                                               RationalPoint3{Exact(c.x), Exact(c.y), Exact(c.z)});
-  // The first point of the ray from `from` through `to` in the triangle, before `to`.
+  // The first point of the ray from `from` through `to` in the triangle, before `to` (interval filter first).
+  const IVec o = enclose(from), q = enclose(to);
+  if (certainly_misses(o, sub(q, o), &q, a, b, c)) return false;
   const auto s = first_parameter(from, to - from, lift(a), lift(b), lift(c));
   return s && *s < R(1);
 }
@@ -84,9 +136,33 @@ std::int64_t line_first_hit(const Scene& scene, const TriangleIndex& index, cons
     const RayHit hit = ray_first_hit(scene, index, box, o, d);
     return hit.triangle >= 0 ? scene.triangles[hit.triangle].id : -1;
   }
+  // In Q(sqrt D): the candidates of the interval cover of the ray (kernel/ray_first_hit.hpp; every triangle
+  // when no direction enclosure excludes 0), each rejected by the interval filter or decided exactly; in
+  // index order, so ties go to the lowest index as before.
+  if (box.empty()) return -1;
+  RayEnclosure ray;
+  for (int k = 0; k < 3; ++k) {
+    ray.origin[k] = CGAL::to_interval(origin[k]);
+    ray.dir[k] = CGAL::to_interval(dir[k]);
+    ray.dir_sign[k] = sign_of(CGAL::sign(dir[k]));
+  }
+  std::optional<std::vector<std::int64_t>> cover = ray_cover_candidates(
+      index, box, ray, [&](int k, double face) { return sign_of(CGAL::sign(R(Exact(face)) - origin[k])); });
+  std::vector<std::int64_t> cand;
+  if (cover) {
+    cand = std::move(*cover);
+    std::sort(cand.begin(), cand.end());
+    cand.erase(std::unique(cand.begin(), cand.end()), cand.end());
+  } else {
+    cand.resize(scene.triangles.size());
+    std::iota(cand.begin(), cand.end(), std::int64_t{0});
+  }
+  const IVec io = enclose(origin), id = enclose(dir);
   std::optional<R> best;
   std::int64_t best_id = -1;
-  for (const SceneTriangle& t : scene.triangles) {
+  for (const std::int64_t ti : cand) {
+    const SceneTriangle& t = scene.triangles[ti];
+    if (certainly_misses(io, id, nullptr, scene.corner(t, 0), scene.corner(t, 1), scene.corner(t, 2))) continue;
     const auto s = first_parameter(origin, dir, lift(scene.corner(t, 0)), lift(scene.corner(t, 1)),
                                    lift(scene.corner(t, 2)));
     if (s && (!best || *s < *best)) best = s, best_id = t.id;

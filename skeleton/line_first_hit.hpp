@@ -14,12 +14,14 @@ namespace exactvis {
 // Output: the stable id of the closed scene triangle met first by the open ray {origin + s dir : s > 0}
 // (a triangle coplanar with the ray counts from its first point; ties go to the lowest triangle index), or
 // -1 when the ray leaves the scene. Exact. Rational rays go through kernel/ray_first_hit (spatial index);
-// rays in Q(sqrt D) test every triangle exactly (O(n); only EEEE node lines with an irrational root).
+// rays in Q(sqrt D) (EEEE node lines with an irrational root) take the candidates of the same interval cover
+// (ray_cover_candidates; all triangles only when no direction enclosure excludes 0), reject most by an
+// interval filter and decide the rest exactly in Q(sqrt D). Cost: O(32 log n + k) plus the exact tests.
 std::int64_t line_first_hit(const Scene& scene, const TriangleIndex& index, const Box3& box,
                             const Vec3<RootNumber>& origin, const Vec3<RootNumber>& dir);
 
 // True iff the open segment (from, to) (from != to) meets the closed triangle (a, b, c), exactly
-// (coordinates rational or in one Q(sqrt D)).
+// (coordinates rational or in one Q(sqrt D); in Q(sqrt D) an interval filter rejects first).
 bool open_segment_meets_triangle(const Vec3<RootNumber>& from, const Vec3<RootNumber>& to, const Point3& a,
                                  const Point3& b, const Point3& c);
 

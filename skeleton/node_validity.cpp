@@ -45,13 +45,28 @@ bool in_plane_of(const Scene& scene, std::int64_t face, const Vec3<R>& x, const 
 
 }  // namespace
 
+bool is_zero_root(const RootNumber& x) {
+  // a0 = a1 = 0 is zero whatever the root (no interval needed); otherwise CGAL's filtered exact sign.
+  if (CGAL::is_zero(x.a0()) && (!x.is_extended() || CGAL::is_zero(x.a1()))) return true;
+  return CGAL::is_zero(x);
+}
+
+bool is_zero_vector(const Vec3<RootNumber>& v) { return is_zero_root(v.x) && is_zero_root(v.y) && is_zero_root(v.z); }
+
 std::optional<RootNumber> edge_meeting_parameter(const Vec3<RootNumber>& o, const Vec3<RootNumber>& d,
                                                  const Vec3<RootNumber>& a, const Vec3<RootNumber>& b) {
+  // (a - o + u w) x d = g + u c with w = b - a, g = (a - o) x d, c = w x d: where the lines meet, g = -u c,
+  // so u = -g_k / c_k on any axis with c_k != 0 (one component: 4 products instead of the 18 of a
+  // least-squares formula; the lines are parallel iff c = 0).
   const Vec3<R> w = b - a;
-  const Vec3<R> c = cross(w, d);
-  const R cc = dot(c, c);
-  if (CGAL::is_zero(cc)) return std::nullopt;
-  return -dot(cross(a - o, d), c) / cc;
+  for (int k = 0; k < 3; ++k) {
+    const int i = (k + 1) % 3, j = (k + 2) % 3;
+    const R c = w[i] * d[j] - w[j] * d[i];
+    if (is_zero_root(c)) continue;
+    const R ai = a[i] - o[i], aj = a[j] - o[j];
+    return (aj * d[i] - ai * d[j]) / c;  // -g_k / c_k
+  }
+  return std::nullopt;
 }
 
 bool node_line_valid(const Scene& scene, const SceneAdjacency& adj, const TriangleIndex& index,
@@ -61,13 +76,12 @@ bool node_line_valid(const Scene& scene, const SceneAdjacency& adj, const Triang
   if (!face_kind && k.kind != ExtremalLineKind::VV && k.kind != ExtremalLineKind::VEE &&
       k.kind != ExtremalLineKind::EEEE)
     return true;  // contact kinds: valid by definition (header)
-  if (CGAL::is_zero(dot(dir, dir))) return false;
+  if (is_zero_vector(dir)) return false;
   const Vec3<R>& o = node.from;
   // Vertex generators: on the line (true by construction; checked), vertex rule unless a face kind.
   for (int i = 0; i < k.vertex_count(); ++i) {
     const int v = k.vertices[i];
-    if (!CGAL::is_zero(dot(cross(lift(scene.vertices[v]) - o, dir), cross(lift(scene.vertices[v]) - o, dir))))
-      return false;
+    if (!is_zero_vector(cross(lift(scene.vertices[v]) - o, dir))) return false;
     if (face_kind) continue;
     Vec3<Exact> d;
     if (!rational_vector(dir, &d)) return false;  // lines through a vertex are rational
@@ -83,8 +97,7 @@ bool node_line_valid(const Scene& scene, const SceneAdjacency& adj, const Triang
     const auto u = edge_meeting_parameter(o, dir, a, b);
     if (!u || CGAL::sign(*u) <= 0 || !(*u < R(1))) return false;
     const Vec3<R> x = a + *u * (b - a);
-    const Vec3<R> off = cross(x - o, dir);
-    if (!CGAL::is_zero(dot(off, off))) return false;  // skew: not met at all
+    if (!is_zero_vector(cross(x - o, dir))) return false;  // skew: not met at all
     if (!edge_rule(scene, adj, k.edges[i], x, dir)) return false;
   }
   if (face_kind && !in_plane_of(scene, k.faces[0], o, dir)) return false;

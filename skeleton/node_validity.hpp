@@ -22,9 +22,15 @@
 namespace exactvis {
 
 // The parameter u of the point a + u (b - a) where the line {o + s d} meets the line of (a, b); nullopt
-// when they are parallel. Exact if the two lines meet (callers know they do, or check).
+// when they are parallel. Exact when the two lines meet; for skew lines some u (callers know the lines
+// meet, or check that a + u (b - a) is on the line). Cost: about 4 products and one division in Q(sqrt D).
 std::optional<RootNumber> edge_meeting_parameter(const Vec3<RootNumber>& o, const Vec3<RootNumber>& d,
                                                  const Vec3<RootNumber>& a, const Vec3<RootNumber>& b);
+
+// Whether x (in Q or Q(sqrt D)) is zero: a0 = a1 = 0 decides at once, else the filtered exact sign.
+bool is_zero_root(const RootNumber& x);
+// Whether every coordinate is zero (is_zero_root).
+bool is_zero_vector(const Vec3<RootNumber>& v);
 
 // Input: the scene, its adjacency and spatial index, a node with its key and spanned segment (from, to),
 // and the line's direction (to - from when from != to). Output: whether the node is valid (above). Exact.

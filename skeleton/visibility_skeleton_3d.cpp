@@ -76,10 +76,15 @@ void finish_node(const Scene& scene, const SceneAdjacency& adj, const TriangleIn
                                   lift(scene.vertices[k.edges[i][1]]));
     if (x) pts.push_back(*x);
   }
+  // Order along the line: every point is origin + lambda dir, so one axis with dir_k != 0 orders them
+  // (lambda dir_k = p_k - origin_k; negated when dir_k < 0).
+  int axis = 0;
+  while (axis < 2 && is_zero_root(line.dir[axis])) ++axis;
+  const bool flip = CGAL::sign(line.dir[axis]) < 0;
   std::size_t lo = 0, hi = 0;
   std::vector<R> s(pts.size());
   for (std::size_t i = 0; i < pts.size(); ++i) {
-    s[i] = dot(pts[i] - line.origin, line.dir);
+    s[i] = flip ? line.origin[axis] - pts[i][axis] : pts[i][axis] - line.origin[axis];
     if (s[i] < s[lo]) lo = i;
     if (s[hi] < s[i]) hi = i;
   }
