@@ -4,12 +4,16 @@
 // exact backprojection per face, optionally per mesh vertex), counts and growth exponents.
 //
 // Usage: bench_shadows [--kind room|town] [--sizes 250,500,1000] [--seed 1] [--vertex-irradiance]
-//                      [--threads N (0: all cores)]
+//                      [--threads N (0: all cores)] [--no-shaft] [--no-cull]
+// --no-shaft / --no-cull: without the per-receiver shaft restriction / the blocker-blocker EV cull (the
+// baselines; same output). cpu_s: process CPU seconds (user + system, all threads), the growth exponent's
+// figure; shaft%: shaft candidates kept of those in the receiver-light boxes.
 #include "bench/bench_util.hpp"
 #include "events/light_source.hpp"
 #include "kernel/scene_generators.hpp"
 #include "shadows/shadow_mesh.hpp"
 
+#include <sys/resource.h>
 #include <tbb/global_control.h>
 
 #include <cmath>
@@ -18,10 +22,19 @@
 #include <memory>
 #include <string>
 
+namespace {
+// User + system CPU seconds of the process (all threads): the figure to compare on a shared machine.
+double cpu_seconds() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  return u.ru_utime.tv_sec + u.ru_stime.tv_sec + 1e-6 * (u.ru_utime.tv_usec + u.ru_stime.tv_usec);
+}
+}  // namespace
+
 int main(int argc, char** argv) {
   std::string kind = "room", sizes = "250,500,1000,2000";
   std::uint64_t seed = 1;
-  bool vertex_irradiance = false;
+  bool vertex_irradiance = false, shaft = true, cull = true;
   int threads = 0;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
@@ -30,18 +43,21 @@ int main(int argc, char** argv) {
     else if (a == "--seed" && i + 1 < argc) seed = std::stoull(argv[++i]);
     else if (a == "--threads" && i + 1 < argc) threads = std::stoi(argv[++i]);
     else if (a == "--vertex-irradiance") vertex_irradiance = true;
+    else if (a == "--no-shaft") shaft = false;
+    else if (a == "--no-cull") cull = false;
     else {
-      std::fprintf(stderr, "usage: bench_shadows [--kind room|town] [--sizes a,b,c] [--seed S] [--vertex-irradiance] [--threads N]\n");
+      std::fprintf(stderr, "usage: bench_shadows [--kind room|town] [--sizes a,b,c] [--seed S] [--vertex-irradiance] [--threads N] [--no-shaft] [--no-cull]\n");
       return 2;
     }
   }
   std::unique_ptr<tbb::global_control> gc;
   if (threads > 0) gc = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, threads);
-  std::printf("kind %s, seed %llu, vertex irradiance %s\n", kind.c_str(), static_cast<unsigned long long>(seed),
-              vertex_irradiance ? "yes" : "no");
-  std::printf("%8s %9s %7s %6s %7s %5s %6s %7s %5s %5s %6s %6s %6s %8s %8s %9s %8s %7s\n", "tris", "receivers",
+  std::printf("kind %s, seed %llu, vertex irradiance %s, shaft %s, blocker EV cull %s\n", kind.c_str(),
+              static_cast<unsigned long long>(seed), vertex_irradiance ? "yes" : "no", shaft ? "on" : "off",
+              cull ? "on" : "off");
+  std::printf("%8s %9s %7s %6s %7s %5s %6s %7s %5s %5s %6s %6s %6s %8s %8s %9s %8s %8s %6s %7s\n", "tris", "receivers",
               "EVcurv", "BBcurv", "EEEcurv", "D0", "faces", "umbra", "arcs", "fail", "ev_s", "bb_s", "eee_s",
-              "events_s", "recv_s", "ms/recv", "recv/ev", "growth");
+              "events_s", "recv_s", "ms/recv", "recv/ev", "cpu_s", "shaft%", "growth");
   double prev_n = 0, prev_t = 0;
   for (const auto& item : exactvis::bench::split(sizes)) {
     const long n = std::stol(item);
@@ -55,9 +71,11 @@ int main(int argc, char** argv) {
     exactvis::shadows::ShadowOptions opt;
     opt.light = light.triangles;
     opt.vertex_irradiance = vertex_irradiance;
-    const double t0 = exactvis::bench::now();
+    opt.shaft_restriction = shaft;
+    opt.blocker_cull = cull;
+    const double c0 = cpu_seconds();
     const auto res = exactvis::shadows::compute_shadows(scene, opt);
-    const double total = exactvis::bench::now() - t0;
+    const double cpu = cpu_seconds() - c0;
     std::uint64_t ev = 0, bb = 0, eee = 0, d0 = 0, faces = 0, umbra = 0;
     for (const auto& r : res.receivers) {
       for (const auto& c : r.curves) {
@@ -70,19 +88,20 @@ int main(int argc, char** argv) {
         umbra += f.light_class == exactvis::shadows::LightClass::Umbra;
       }
     }
-    const double growth = prev_n > 0 ? std::log(total / prev_t) / std::log(n / prev_n) : 0;
-    std::printf("%8ld %9zu %7llu %6llu %7llu %5llu %6llu %7llu %5llu %5llu %6.2f %6.2f %6.2f %8.2f %8.2f %9.2f %8.2f %7s\n",
+    const double growth = prev_n > 0 ? std::log(cpu / prev_t) / std::log(n / prev_n) : 0;
+    std::printf("%8ld %9zu %7llu %6llu %7llu %5llu %6llu %7llu %5llu %5llu %6.2f %6.2f %6.2f %8.2f %8.2f %9.2f %8.2f %8.2f %6.1f %7s\n",
                 n, res.receivers.size(), (unsigned long long)ev, (unsigned long long)bb, (unsigned long long)eee,
                 (unsigned long long)d0, (unsigned long long)faces, (unsigned long long)umbra,
                 (unsigned long long)res.stats.conic_arcs, (unsigned long long)res.stats.arrangement_failures,
                 res.stats.seconds_ev - res.stats.seconds_blocker_ev, res.stats.seconds_blocker_ev, res.stats.seconds_eee,
                 res.stats.seconds_events, res.stats.seconds_receivers,
                 1000 * res.stats.seconds_receivers / std::max<std::size_t>(1, res.receivers.size()),
-                res.stats.seconds_receivers / std::max(1e-9, res.stats.seconds_events),
+                res.stats.seconds_receivers / std::max(1e-9, res.stats.seconds_events), cpu,
+                100.0 * res.stats.shaft_candidates / std::max<std::uint64_t>(1, res.stats.shaft_box_candidates),
                 prev_n > 0 ? std::to_string(growth).substr(0, 4).c_str() : "-");
     std::fflush(stdout);
     prev_n = static_cast<double>(n);
-    prev_t = total;
+    prev_t = cpu;
   }
   return 0;
 }

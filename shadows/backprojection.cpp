@@ -63,12 +63,18 @@ const char* light_class_name(LightClass c) {
   return "lit";
 }
 
-Backprojection backproject(const Scene& scene, const TriangleIndex& index, const std::vector<int>& light,
-                           const RationalPoint3& p) {
+namespace {
+
+// The backprojection with the candidate blockers of light triangle light[k] given by
+// candidates(k, box of p and that triangle): any superset (in increasing index order) of the triangles
+// meeting conv(p ∪ L) gives the same result, since the others hide a set of zero area.
+template <class Candidates>
+Backprojection backproject_with(const Scene& scene, const std::vector<int>& light, const RationalPoint3& p,
+                                Candidates&& candidates) {
   Backprojection bp;
   std::set<std::int64_t> blockers;
-  std::set<int> light_set(light.begin(), light.end());
-  for (int li : light) {
+  for (std::size_t k_light = 0; k_light < light.size(); ++k_light) {
+    const int li = light[k_light];
     const auto lt = region::triangle_points(scene, li);
     VisibleLightPart part;
     part.light_triangle = li;
@@ -81,7 +87,7 @@ Backprojection backproject(const Scene& scene, const TriangleIndex& index, const
     const Box3 box = region::enclosing_box(hull);
     std::vector<Polygon2> hidden;
     std::vector<std::int64_t> hidden_by;
-    for (std::int64_t ti : index.triangles_meeting_box(box)) {
+    for (std::int64_t ti : candidates(k_light, box)) {
       if (ti == li) continue;
       const auto t = region::triangle_points(scene, ti);
       const Sign sp = orient3d(t[0], t[1], t[2], p);
@@ -174,6 +180,35 @@ Backprojection backproject(const Scene& scene, const TriangleIndex& index, const
   bp.light_class = none_visible ? LightClass::Umbra : (all_visible ? LightClass::Lit : LightClass::Penumbra);
   bp.blockers.assign(blockers.begin(), blockers.end());
   return bp;
+}
+
+bool boxes_meet(const Box3& a, const Box3& b) {
+  return a.lo.x <= b.hi.x && b.lo.x <= a.hi.x && a.lo.y <= b.hi.y && b.lo.y <= a.hi.y && a.lo.z <= b.hi.z &&
+         b.lo.z <= a.hi.z;
+}
+
+}  // namespace
+
+Backprojection backproject(const Scene& scene, const TriangleIndex& index, const std::vector<int>& light,
+                           const RationalPoint3& p) {
+  return backproject_with(scene, light, p,
+                          [&](std::size_t, const Box3& box) { return index.triangles_meeting_box(box); });
+}
+
+Backprojection backproject(const Scene& scene, const std::vector<int>& light, const RationalPoint3& p,
+                           const ReceiverShaft& shaft) {
+  if (shaft.candidates.size() != light.size())
+    throw std::invalid_argument("backproject: the shaft was built for another light");
+  return backproject_with(scene, light, p, [&](std::size_t k, const Box3& box) {
+    // Per point: only the shaft's triangles whose box meets the box of p and the light triangle (a triangle
+    // meeting conv(p ∪ L) meets that box).
+    std::vector<std::int64_t> out;
+    const auto& cand = shaft.candidates[k];
+    const auto& boxes = shaft.boxes[k];
+    for (std::size_t i = 0; i < cand.size(); ++i)
+      if (boxes_meet(boxes[i], box)) out.push_back(cand[i]);
+    return out;
+  });
 }
 
 RationalPoint3 interior_point(const PlaneChart& chart, const VisiblePolygon& piece) {

@@ -14,6 +14,7 @@
 #include "kernel/triangle_index.hpp"
 #include "region/convex_polygon_3.hpp"
 #include "shadows/light_plane_2d.hpp"
+#include "shadows/receiver_shaft.hpp"
 
 #include <cstdint>
 #include <vector>
@@ -55,6 +56,14 @@ struct Backprojection {
 // the bounding box of p and the triangle, plus the Boolean union of the hidden polygons (O(k log k) typical).
 Backprojection backproject(const Scene& scene, const TriangleIndex& index, const std::vector<int>& light,
                            const RationalPoint3& p);
+
+// The same backprojection with the candidate blockers taken from a receiver's shaft
+// (shadows/receiver_shaft.hpp) instead of the index: `shaft` built for the same `light`, p in the closed
+// receiver triangle (the caller's precondition: then every triangle hiding light from p is in the shaft, and
+// the result is identical to the indexed backproject, docs/theory.md section 11). Cost: per light triangle a
+// box test per shaft candidate, then as above for those meeting the box of p and the triangle.
+Backprojection backproject(const Scene& scene, const std::vector<int>& light, const RationalPoint3& p,
+                           const ReceiverShaft& shaft);
 
 // A point strictly inside the visible polygon (rational), found on a horizontal line of the chart avoiding
 // every vertex. Exact.

@@ -7,11 +7,13 @@
 #include "shadows/blocker_events.hpp"
 #include "shadows/conic_arrangement.hpp"
 #include "shadows/point_irradiance.hpp"
+#include "shadows/receiver_shaft.hpp"
 #include "util/for_each_index.hpp"
 #include "util/progress_bar.hpp"
 
 #include <atomic>
 #include <chrono>
+#include <optional>
 #include <set>
 #include <stdexcept>
 
@@ -54,6 +56,7 @@ ShadowResult compute_shadows(const Scene& scene, const ShadowOptions& options) {
   BlockerEvOptions bo;  // the blocker-blocker EV and EEE events
   bo.parallel = options.parallel;
   bo.progress = options.progress;
+  bo.cull = options.blocker_cull;
   if (options.blocker_events) {
     const auto before_bb = std::chrono::steady_clock::now();
     EvResult bb = blocker_ev_events(scene, options.light, bo);
@@ -81,13 +84,27 @@ ShadowResult compute_shadows(const Scene& scene, const ShadowOptions& options) {
 
   res.receivers.resize(receivers.size());
   std::atomic<std::uint64_t> backprojections{0}, conic_arcs{0}, chord_curves{0}, arrangement_failures{0}, trimmed_arcs{0},
-      uncertified_samples{0};
+      uncertified_samples{0}, box_candidates{0}, shaft_candidates{0}, shaft_outside{0};
   ProgressBar bar("shadows: receivers", receivers.size(), options.progress);
   for_each_index(receivers.size(), options.parallel, 1, [&](std::size_t i) {
     ReceiverShadows& out = res.receivers[i];
     out.triangle = receivers[i];
     const std::int64_t rid = scene.triangles[out.triangle].id;
     const ReceiverFrame frame = receiver_frame(scene, out.triangle);
+    // The receiver's shaft (shadows/receiver_shaft.hpp): the blockers of every backprojection below. A point
+    // outside the closed receiver (none expected: samples are inside faces of R, mesh vertices in R) takes
+    // the indexed backprojection instead, which needs no precondition.
+    std::optional<ReceiverShaft> shaft;
+    if (options.shaft_restriction) {
+      shaft = receiver_shaft(scene, index, options.light, out.triangle);
+      box_candidates += shaft->box_candidates;
+      for (const auto& c : shaft->candidates) shaft_candidates += c.size();
+    }
+    auto backproject_uv = [&](const Exact& u, const Exact& v, const Vec3<Exact>& x) {
+      if (shaft && u >= 0 && v >= 0 && u + v <= 1) return backproject(scene, options.light, x, *shaft);
+      if (shaft) ++shaft_outside;
+      return backproject(scene, index, options.light, x);
+    };
     if (const auto it = curves.find(rid); it != curves.end()) out.curves = it->second;
     for (auto& c : contact_curves(scene, index, options.light, out.triangle)) out.curves.push_back(std::move(c));
     const std::vector<ArrangementCurve> arcs = arrangement_curves(out.curves, frame);
@@ -146,7 +163,7 @@ ShadowResult compute_shadows(const Scene& scene, const ShadowOptions& options) {
       }
       s.area = s.area_uv_value * frame.area_scale();
       s.sample = frame.to_3d(f.sample[0], f.sample[1]);
-      Backprojection bp = backproject(scene, index, options.light, s.sample);
+      Backprojection bp = backproject_uv(f.sample[0], f.sample[1], s.sample);
       s.light_class = bp.light_class;
       s.fraction_exact = bp.fraction_exact;
       s.fraction = bp.fraction;
@@ -159,8 +176,9 @@ ShadowResult compute_shadows(const Scene& scene, const ShadowOptions& options) {
     }
     for (const auto& v : out.mesh.vertices) out.vertices.push_back(frame.to_3d(v[0], v[1]));
     if (options.vertex_irradiance) {
-      for (const auto& v : out.vertices) {
-        const Backprojection bp = backproject(scene, index, options.light, v);
+      for (std::size_t k = 0; k < out.vertices.size(); ++k) {
+        const auto& v = out.vertices[k];
+        const Backprojection bp = backproject_uv(out.mesh.vertices[k][0], out.mesh.vertices[k][1], v);
         out.vertex_irradiance.push_back(point_irradiance(scene, v, frame.normal(), bp));
         ++backprojections;
       }
@@ -173,6 +191,9 @@ ShadowResult compute_shadows(const Scene& scene, const ShadowOptions& options) {
   res.stats.arrangement_failures = arrangement_failures.load();
   res.stats.trimmed_arcs = trimmed_arcs.load();
   res.stats.uncertified_samples = uncertified_samples.load();
+  res.stats.shaft_box_candidates = box_candidates.load();
+  res.stats.shaft_candidates = shaft_candidates.load();
+  res.stats.shaft_outside_points = shaft_outside.load();
   res.stats.seconds_receivers =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - mid).count();
   return res;

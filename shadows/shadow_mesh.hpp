@@ -27,6 +27,12 @@ struct ShadowOptions {
   bool parallel = true;                   // oneTBB over receivers
   // Include blocker-blocker EV and EEE events (shadows/blocker_events.hpp, shadows/blocker_eee_events.hpp).
   bool blocker_events = true;
+  // Backproject each receiver's points against the blockers of its shaft conv(light ∪ receiver)
+  // (shadows/receiver_shaft.hpp) instead of an index query per point; off: the per-point index query.
+  // The output is identical either way (docs/theory.md section 11; tests/shadows/test_receiver_shaft).
+  bool shaft_restriction = true;
+  // The blocker-blocker EV cull through the light's tetrahedra (BlockerEvOptions::cull; same events).
+  bool blocker_cull = true;
   EeeCurveOptions eee;
 };
 
@@ -73,6 +79,10 @@ struct ShadowStats {
   // Arcs whose end pieces entered as chords after a first CGAL failure, and faces (plus lenses) without a
   // certified sample (conic_arrangement.hpp).
   std::uint64_t trimmed_arcs = 0, uncertified_samples = 0;
+  // Shaft restriction (ShadowOptions::shaft_restriction): triangles meeting the boxes of light triangle and
+  // receiver, those kept by the exact shaft test (both summed over receivers and light triangles), and
+  // backprojected points outside their closed receiver (indexed backprojection instead; expected 0).
+  std::uint64_t shaft_box_candidates = 0, shaft_candidates = 0, shaft_outside_points = 0;
   double seconds_events = 0, seconds_receivers = 0;  // events: EV (light and blocker-blocker) + EEE + curves
   double seconds_ev = 0, seconds_eee = 0;  // seconds_ev includes seconds_blocker_ev, seconds_eee _blocker_eee
   double seconds_blocker_ev = 0, seconds_blocker_eee = 0;

@@ -10,6 +10,8 @@
 //   x > 1/2: the tip ends before it: one piece around the tip.
 // The change happens where V' lies on E's image: x = 1/2, -1 <= y <= 1 (V' inside the light), the EV surface of
 // (V, E), neither on the light.
+#include "events/light_source.hpp"
+#include "kernel/scene_generators.hpp"
 #include "shadows/blocker_events.hpp"
 #include "shadows/conic_arrangement.hpp"
 #include "shadows/shadow_mesh.hpp"
@@ -105,6 +107,55 @@ TEST(BlockerEvents, EveryFaceHasOneBackprojectionTopology) {
   const Scene s = two_blocker_scene();
   EXPECT_EQ(mixed_faces(s, true), 0);
   EXPECT_GT(mixed_faces(s, false), 0);
+}
+
+// The cull through the light's tetrahedra (BlockerEvOptions::cull) keeps every event: the same events and
+// intervals as the loop over every vertex and edge, on random blocker scenes and generated rooms and towns;
+// and it examines fewer pairs there (so the comparison is not of two identical loops).
+void expect_same_events(const Scene& s, const std::vector<int>& light, const std::string& name, bool fewer) {
+  BlockerEvOptions on, off;
+  on.parallel = off.parallel = false;
+  off.cull = false;
+  const EvResult a = blocker_ev_events(s, light, on), b = blocker_ev_events(s, light, off);
+  ASSERT_EQ(a.events.size(), b.events.size()) << name;
+  for (std::size_t i = 0; i < a.events.size(); ++i) {
+    const auto &ea = a.events[i], &eb = b.events[i];
+    ASSERT_EQ(ea.vertex, eb.vertex) << name;
+    ASSERT_EQ(ea.edge, eb.edge) << name;
+    ASSERT_EQ(ea.intervals.size(), eb.intervals.size()) << name;
+    for (std::size_t k = 0; k < ea.intervals.size(); ++k) {
+      EXPECT_TRUE(ea.intervals[k].t0 == eb.intervals[k].t0) << name;
+      EXPECT_TRUE(ea.intervals[k].t1 == eb.intervals[k].t1) << name;
+      EXPECT_EQ(ea.intervals[k].front_object, eb.intervals[k].front_object) << name;
+      EXPECT_EQ(ea.intervals[k].back_object, eb.intervals[k].back_object) << name;
+    }
+  }
+  if (fewer) {
+    EXPECT_LT(a.stats.pairs, b.stats.pairs) << name;
+  }
+}
+
+TEST(BlockerEvents, CullThroughTheLightKeepsEveryEvent) {
+  std::size_t events = 0;
+  for (unsigned seed = 1; seed <= 4; ++seed) {
+    const Scene s = shadow_test::random_blocker_scene(seed, 6);
+    expect_same_events(s, object_triangles(s, "lamp"), "random seed " + std::to_string(seed), false);
+    events += blocker_ev_events(s, object_triangles(s, "lamp")).events.size();
+  }
+  expect_same_events(two_blocker_scene(), object_triangles(two_blocker_scene(), "lamp"), "two blockers", false);
+  for (const std::string kind : {"room", "town"}) {
+    Scene s = generate_scene(kind, 150, 2);
+    const Box3 b = bounding_box(s);
+    const double cx = (b.lo.x + b.hi.x) / 2, cy = (b.lo.y + b.hi.y) / 2;
+    const double sx = (b.hi.x - b.lo.x) * 0.05, sy = (b.hi.y - b.lo.y) * 0.05;
+    const double z = kind == "room" ? b.hi.z - 0.02 * (b.hi.z - b.lo.z) : b.hi.z + 0.5 * (b.hi.z - b.lo.z);
+    const auto light = append_light_polygon(s, {{cx - sx, cy - sy, z}, {cx + sx, cy - sy, z}, {cx + sx, cy + sy, z},
+                                                {cx - sx, cy + sy, z}})
+                           .triangles;
+    expect_same_events(s, light, kind, true);
+    events += blocker_ev_events(s, light).events.size();
+  }
+  EXPECT_GT(events, 10u);
 }
 
 }  // namespace
