@@ -103,22 +103,19 @@ std::vector<ShaftOccluder> shaft_occluders(const Scene& scene, const std::vector
     if (idx == target) continue;
     const auto& st = scene.triangles[idx];
     const std::array<Point3, 3> c{scene.corner(st, 0), scene.corner(st, 1), scene.corner(st, 2)};
-    // The polygon planes (planes[0], planes[1]) first, all three corners: strictly inside both, the clipping
-    // shortcut applies.
-    bool inside_wedge = true, culled = false;
-    for (std::size_t k = 0; k < 2 && !culled; ++k) {
-      int positive = 0;
-      for (const auto& x : c) positive += planes[k].side(x) == Sign::Positive ? 1 : 0;
-      inside_wedge = inside_wedge && positive == 3;
-      culled = positive == 0;
-    }
-    for (std::size_t k = 2; k < planes.size() && !culled; ++k) {
+    bool culled = false;
+    for (std::size_t k = 0; k < planes.size() && !culled; ++k) {
       const auto& pl = planes[k];
       // Entirely on the closed outer side of a supporting plane: meets the shaft at most in that plane,
       // which only a measure-zero set of stabbing segments touches (docs/theory.md §5.2).
       culled = pl.side(c[0]) != Sign::Positive && pl.side(c[1]) != Sign::Positive && pl.side(c[2]) != Sign::Positive;
     }
     if (culled) continue;
+    // Strictly inside both polygon planes (planes[0], planes[1]): the clipping shortcut applies. Only the
+    // few survivors of the culling pay these signs.
+    bool inside_wedge = true;
+    for (std::size_t k = 0; k < 2 && inside_wedge; ++k)
+      for (std::size_t i = 0; i < 3 && inside_wedge; ++i) inside_wedge = planes[k].side(c[i]) == Sign::Positive;
     auto occ = inside_wedge ? unclipped_occluder(c) : clipped_occluder(triangle_points(scene, idx), pair);
     if (occ) {
       occ->triangle = idx;

@@ -123,11 +123,13 @@ std::optional<PolyhedralCone6> intersect_open_halfspace(const PolyhedralCone6& c
     out.rays.push_back(cone.rays[r]);
     out.incidence.push_back(widen(cone.incidence[r], sign[r] == 0));
   }
+  boost::dynamic_bitset<> common(n_old);  // reused for every pair: assignment keeps its storage
   for (std::size_t p = 0; p < cone.rays.size(); ++p) {
     if (sign[p] <= 0) continue;
     for (std::size_t q = 0; q < cone.rays.size(); ++q) {
       if (sign[q] >= 0) continue;
-      const boost::dynamic_bitset<> common = cone.incidence[p] & cone.incidence[q];
+      common = cone.incidence[p];
+      common &= cone.incidence[q];
       if (dim >= 2 && common.count() + 2 < dim) continue;
       bool adjacent = true;
       for (std::size_t r = 0; r < cone.rays.size() && adjacent; ++r)
