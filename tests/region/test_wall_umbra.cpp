@@ -312,7 +312,18 @@ TEST(WallUmbra, ViewOverlapProofsSurviveRandomSegments) {
       if (bx < ax || (bx == ax && by < ay)) std::swap(w.ax, w.bx), std::swap(w.ay, w.by);
       return w;
     };
-    const WallRectangle A = wall(4), B = wall(7);
+    // Every third trial: two walls on lines crossing between the cell and the target (an X), each segment
+    // anywhere on its line, so an end of one may lie beyond the other's line (the ray-side condition).
+    auto crossing = [&](double ox, double oy) {
+      const double dx = std::round(6 * u(rng)) - 3, dy = 1 + std::round(3 * u(rng));
+      const double s0 = std::round(16 * u(rng)) - 8, s1 = s0 + 1 + std::round(6 * u(rng));
+      WallRectangle w{ox + s0 * dx, oy + s0 * dy, ox + s1 * dx, oy + s1 * dy, 0, 1 + std::round(6 * u(rng))};
+      if (w.bx < w.ax || (w.bx == w.ax && w.by < w.ay)) std::swap(w.ax, w.bx), std::swap(w.ay, w.by);
+      return w;
+    };
+    const bool x_shape = trial % 3 == 0;
+    const double ox = 5 + std::round(2 * u(rng)), oy = std::round(4 * u(rng)) - 2;
+    const WallRectangle A = x_shape ? crossing(ox, oy) : wall(4), B = x_shape ? crossing(ox, oy) : wall(7);
     const double cx = 2 * u(rng) - 2, cy = 6 * u(rng) - 3, side = 0.5 + 2 * u(rng);
     const RationalBox3 cell = exact_box({{cx, cy, 0}, {cx + side, cy + side, 0.5 + u(rng)}});
     const UmbraTarget t = square_at(11 + 6 * u(rng), 12 * u(rng) - 6, 0.2 + u(rng), 0, 2 * u(rng));
