@@ -17,6 +17,7 @@ size=640x480
 "$ev" events scenes/lamp_room.obj --light lamp --png $img/events.png --png-size $size -q >/dev/null
 "$ev" shadows scenes/lamp_room.obj --light lamp --png $img/shadows.png -q >/dev/null
 "$ev" aspect scenes/cube.obj --orthographic --png $img/aspect.png -q >/dev/null
+"$ev" aspect scenes/l_prism.obj --plane z=2 --png $img/aspect_plane.png -q >/dev/null
 "$ev" complex2d scenes/plan2d.json --svg $img/complex2d.svg >/dev/null
 "$ev" visibility2d scenes/plan2d.json --from 5.5,2 --svg $img/visibility2d.svg >/dev/null
 "$ev" aspect2d scenes/plan2d.json --svg $img/aspect2d.svg -q >/dev/null
