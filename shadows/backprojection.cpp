@@ -76,6 +76,8 @@ Backprojection backproject_with(const Scene& scene, const std::vector<int>& ligh
   for (std::size_t k_light = 0; k_light < light.size(); ++k_light) {
     const int li = light[k_light];
     const auto lt = region::triangle_points(scene, li);
+    const auto& ltri = scene.triangles[li];
+    const Point3 ld[3] = {scene.corner(ltri, 0), scene.corner(ltri, 1), scene.corner(ltri, 2)};
     VisibleLightPart part;
     part.light_triangle = li;
     part.chart = chart_of_triangle(lt[0], lt[1], lt[2]);
@@ -89,17 +91,20 @@ Backprojection backproject_with(const Scene& scene, const std::vector<int>& ligh
     std::vector<std::int64_t> hidden_by;
     for (std::int64_t ti : candidates(k_light, box)) {
       if (ti == li) continue;
+      // The light corners against T's plane: scene doubles, so the double-input filtered orient3d (exact,
+      // no rational conversion) decides them.
+      const auto& tt = scene.triangles[ti];
+      const Point3 td[3] = {scene.corner(tt, 0), scene.corner(tt, 1), scene.corner(tt, 2)};
+      const Sign s0 = orient3d(td[0], td[1], td[2], ld[0]), s1 = orient3d(td[0], td[1], td[2], ld[1]),
+                 s2 = orient3d(td[0], td[1], td[2], ld[2]);
+      if (s0 == Sign::Zero && s1 == Sign::Zero && s2 == Sign::Zero)
+        continue;  // T in the light's plane: the open segment (p, q) ends before it
       const auto t = region::triangle_points(scene, ti);
       const Sign sp = orient3d(t[0], t[1], t[2], p);
       if (sp == Sign::Zero) continue;  // p in T's plane: hides at most a segment
-      if (orient3d(t[0], t[1], t[2], lt[0]) == Sign::Zero && orient3d(t[0], t[1], t[2], lt[1]) == Sign::Zero &&
-          orient3d(t[0], t[1], t[2], lt[2]) == Sign::Zero)
-        continue;  // T in the light's plane: the open segment (p, q) ends before it
       // Exact sign pre-tests (filtered): the light triangle entirely on p's side of T's plane, or entirely
       // outside one of the cone's side planes, is not hidden by T.
-      if (orient3d(t[0], t[1], t[2], lt[0]) == sp && orient3d(t[0], t[1], t[2], lt[1]) == sp &&
-          orient3d(t[0], t[1], t[2], lt[2]) == sp)
-        continue;
+      if (s0 == sp && s1 == sp && s2 == sp) continue;
       bool outside = false;
       for (int k = 0; k < 3 && !outside; ++k) {
         const Sign inner = orient3d(p, t[k], t[(k + 1) % 3], t[(k + 2) % 3]);
