@@ -237,6 +237,27 @@ std::vector<CriticalInterval> split_ev_interval(const Scene& scene, const SceneA
   // What the line passes through at a crossing breakpoint (the first found); endpoint breakpoints are looked
   // up in `eps` (sorted by t) when a piece ends there.
   std::map<Exact, CriticalEnd> crossing_at;
+  // Interval enclosures of the segments' ends (alpha, beta of p, then of q), for the crossing filter below.
+  std::vector<std::array<I, 4>> seg_box(segs.size());
+  for (std::size_t i = 0; i < segs.size(); ++i) {
+    const Exact* c[4] = {&segs[i].p.alpha, &segs[i].p.beta, &segs[i].q.alpha, &segs[i].q.beta};
+    for (int k = 0; k < 4; ++k) {
+      const auto e = enclosing_interval(*c[k]);
+      seg_box[i][k] = I(e.first, e.second);
+    }
+  }
+  // Interval filter of the exact crossing test: true only when the segments' parameters u, v (below) are
+  // certainly outside [0, 1] (the exact test then skips the pair too); the denominator must exclude 0.
+  auto certainly_apart = [&](std::size_t fi, std::size_t gi) {
+    const auto& f = seg_box[fi];
+    const auto& g = seg_box[gi];
+    const I d1a = f[2] - f[0], d1b = f[3] - f[1], d2a = g[2] - g[0], d2b = g[3] - g[1];
+    const I den = d1a * d2b - d1b * d2a;
+    if (!(den.inf() > 0 || den.sup() < 0)) return false;
+    const I wa = g[0] - f[0], wb = g[1] - f[1];
+    const I u = (wa * d2b - wb * d2a) / den, v = (wa * d1b - wb * d1a) / den;
+    return u.sup() < 0 || u.inf() > 1 || v.sup() < 0 || v.inf() > 1;
+  };
   // (b) crossings of a triangle's segments with the other segments, inside (t0, t1); cached per triangle.
   std::map<int, std::vector<Exact>> crossing_cache;
   auto crossings_of = [&](int tri) -> const std::vector<Exact>& {
@@ -248,8 +269,9 @@ std::vector<CriticalInterval> split_ev_interval(const Scene& scene, const SceneA
     for (std::size_t fi : sit->second) {
       const Seg& f = segs[fi];
       const P2 d1 = sub(f.q, f.p);
-      for (const Seg& g : segs) {
-        if (g.triangle == tri) continue;
+      for (std::size_t gi = 0; gi < segs.size(); ++gi) {
+        const Seg& g = segs[gi];
+        if (g.triangle == tri || certainly_apart(fi, gi)) continue;
         const P2 d2 = sub(g.q, g.p);
         const Exact den = cross2(d1, d2);
         if (CGAL::is_zero(den)) continue;  // parallel or collinear: changes only at endpoints
