@@ -171,6 +171,7 @@ int main(int argc, char** argv) {
   std::string points = "8,16,32,64,128", persp = "8,16,32", pairs = "4,6,8,12", plane_pairs;
   std::uint64_t seed = 1;
   int repeat = 3;
+  bench::require_option_pairs(argc, argv, 1, "bench_aspect");
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string a = argv[i];
     if (a == "--points") points = argv[i + 1];

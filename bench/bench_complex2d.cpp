@@ -83,12 +83,14 @@ double median(std::vector<double> v) {
 int main(int argc, char** argv) {
   int max_n = 4096, max_old = 4096, queries = 200, rounds = 5;
   std::string sections = "1,2,3";
+  bench::require_option_pairs(argc, argv, 1, "bench_complex2d");
   for (int i = 1; i + 1 < argc; i += 2) {
     if (!std::strcmp(argv[i], "--max-n")) max_n = std::atoi(argv[i + 1]);
     else if (!std::strcmp(argv[i], "--max-old")) max_old = std::atoi(argv[i + 1]);
     else if (!std::strcmp(argv[i], "--queries")) queries = std::atoi(argv[i + 1]);
     else if (!std::strcmp(argv[i], "--rounds")) rounds = std::max(1, std::atoi(argv[i + 1]));
     else if (!std::strcmp(argv[i], "--sections")) sections = argv[i + 1];
+    else return bench::unknown_option("bench_complex2d", std::string(argv[i]));
   }
   // Visible pairs by either method (the complex's vertices are the bitangents among them).
   auto time_graph = [](const Scene2D& s, VisibilityGraphMethod m, std::size_t* pairs, std::size_t* bitangents) {

@@ -20,11 +20,13 @@ using namespace exactvis;
 int main(int argc, char** argv) {
   std::vector<std::string> kinds{"town", "forest"}, sizes{"1000", "2000"};
   int threads = 1;
+  bench::require_option_pairs(argc, argv, 1, "bench_cone_layers");
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string a = argv[i];
     if (a == "--kinds") kinds = bench::split(argv[i + 1]);
     else if (a == "--sizes") sizes = bench::split(argv[i + 1]);
     else if (a == "--threads") threads = std::stoi(argv[i + 1]);
+    else return bench::unknown_option("bench_cone_layers", a);
   }
   std::printf("%-7s %8s %8s %6s %8s %9s %10s %10s %8s %10s %8s\n", "scene", "tris", "cpu_s", "pvs", "splits",
               "sign_filt", "sign_fixed", "sign_gmp", "gmp_%", "cons_fixed", "cons_gmp");

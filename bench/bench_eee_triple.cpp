@@ -25,6 +25,7 @@ int main(int argc, char** argv) {
   std::vector<std::string> sizes{"100", "1000", "10000", "100000"};
   int triples = 1000;
   unsigned seed = 1;
+  bench::require_option_pairs(argc, argv, 1, "bench_eee_triple");
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string a = argv[i], v = argv[i + 1];
     if (a == "--kinds") kinds = bench::split(v);

@@ -106,6 +106,7 @@ int main(int argc, char** argv) {
   std::vector<std::string> eee_light{"1000", "10000"};
   bool split_ev = true;
   std::uint64_t seed = 1;
+  bench::require_option_pairs(argc, argv, 1, "bench_events");
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string a = argv[i], v = argv[i + 1];
     if (a == "--kinds") kinds = bench::split(v);

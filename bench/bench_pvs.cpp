@@ -46,6 +46,7 @@ int main(int argc, char** argv) {
       methods{"pvs-flat", "pvs-box", "pvs-novirt", "pvs"};
   long baseline_max = 10000;
   int cap = 32;
+  bench::require_option_pairs(argc, argv, 1, "bench_pvs");
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string a = argv[i];
     if (a == "--kinds") kinds = bench::split(argv[i + 1]);
@@ -54,6 +55,7 @@ int main(int argc, char** argv) {
     else if (a == "--baseline-max") baseline_max = std::stol(argv[i + 1]);
     else if (a == "--methods") methods = bench::split(argv[i + 1]);
     else if (a == "--cap") cap = std::stoi(argv[i + 1]);
+    else return bench::unknown_option("bench_pvs", a);
   }
   std::printf("%-7s %8s %3s %-14s %8s %8s %8s %10s %8s %8s %8s %8s %8s %8s\n", "scene", "tris", "thr", "method",
               "wall_s", "cpu_s", "pvs", "tris/cpu_s", "culled", "by_occl", "by_virt", "boxes", "queries", "ratio");

@@ -52,6 +52,7 @@ int main(int argc, char** argv) {
   long exact_max = 10000;
   std::int64_t rays = 1000000;
   long scan_max = 0;
+  bench::require_option_pairs(argc, argv, 1, "bench_pvs_methods");
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string a = argv[i];
     if (a == "--kinds") kinds = bench::split(argv[i + 1]);
@@ -60,6 +61,7 @@ int main(int argc, char** argv) {
     else if (a == "--exact-max") exact_max = std::stol(argv[i + 1]);
     else if (a == "--rays") rays = std::stoll(argv[i + 1]);
     else if (a == "--scan-max") scan_max = std::stol(argv[i + 1]);
+    else return bench::unknown_option("bench_pvs_methods", a);
   }
   std::printf("%-7s %8s %-13s %9s %9s %7s %9s %10s %9s\n", "scene", "tris", "method", "wall_s", "cpu_s", "pvs",
               "vs_exact", "rays", "errors");

@@ -100,11 +100,13 @@ int main(int argc, char** argv) {
   }
   int segments = 1000, cover = 0;
   std::uint64_t seed = 1;
+  bench::require_option_pairs(argc, argv, 3, "bench_quake3_refute");
   for (int i = 3; i + 1 < argc; i += 2) {
     const std::string a = argv[i];
     if (a == "--segments") segments = std::stoi(argv[i + 1]);
     else if (a == "--seed") seed = std::stoull(argv[i + 1]);
     else if (a == "--cover") cover = std::stoi(argv[i + 1]);
+    else return bench::unknown_option("bench_quake3_refute", a);
   }
   const double t_start = bench::now();
   const BspMap map = read_bsp(argv[1]);

@@ -18,10 +18,12 @@ using namespace exactvis::bench;
 
 int main(int argc, char** argv) {
   int max_n = 2048, max_ref = 256, pairs = 40;
+  bench::require_option_pairs(argc, argv, 1, "bench_segments2d");
   for (int i = 1; i + 1 < argc; i += 2) {
     if (!std::strcmp(argv[i], "--max-n")) max_n = std::atoi(argv[i + 1]);
     else if (!std::strcmp(argv[i], "--max-ref")) max_ref = std::atoi(argv[i + 1]);
     else if (!std::strcmp(argv[i], "--pairs")) pairs = std::atoi(argv[i + 1]);
+    else return bench::unknown_option("bench_segments2d", std::string(argv[i]));
   }
   std::printf("# segment-to-segment visibility, %d random pairs of short segments (length ~1.6) per scene\n", pairs);
   std::printf("# complex = segment_visibility_in_complex (index built once, time below excludes it); ref = O(n^4)\n");

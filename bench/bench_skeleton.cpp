@@ -89,6 +89,7 @@ void print(const std::string& name, const Row& r, const Row* prev) {
 int main(int argc, char** argv) {
   std::vector<std::string> polytopes{"4", "8", "16", "32"}, towns{"100", "200"};
   std::uint64_t seed = 1;
+  bench::require_option_pairs(argc, argv, 1, "bench_skeleton");
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string a = argv[i], v = argv[i + 1];
     if (a == "--polytopes") polytopes = bench::split(v);

@@ -1,6 +1,8 @@
 #pragma once
 // Small helpers shared by the benchmark programs.
 #include <chrono>
+#include <cstdio>
+#include <cstdlib>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -19,6 +21,29 @@ inline std::vector<std::string> split(const std::string& s) {
   std::string item;
   while (std::getline(ss, item, ',')) if (!item.empty()) out.push_back(item);
   return out;
+}
+
+// The error for an option a benchmark does not know: one line on stderr (the program's options are listed in
+// the comment at the top of bench/PROGRAM.cpp); returns 2, the exit status, for `return unknown_option(...)`.
+inline int unknown_option(const char* program, const std::string& name) {
+  std::fprintf(stderr, "%s: unknown option %s (the options are listed at the top of bench/%s.cpp)\n", program,
+               name.c_str(), program);
+  return 2;
+}
+
+// Options are "--name value" pairs from argv[first] on. A lone last word (such as --help) or a name without
+// the leading "--" is an unknown option: the program exits with status 2 instead of silently running its whole
+// default benchmark.
+inline void require_option_pairs(int argc, char** argv, int first, const char* program) {
+  for (int i = first; i < argc; i += 2) {
+    const std::string a = argv[i];
+    if (a.size() < 3 || a.compare(0, 2, "--") != 0) std::exit(unknown_option(program, a));
+    if (i + 1 >= argc) {
+      std::fprintf(stderr, "%s: %s: no value (or not an option; the options are listed at the top of bench/%s.cpp)\n",
+                   program, a.c_str(), program);
+      std::exit(2);
+    }
+  }
 }
 
 }  // namespace exactvis::bench

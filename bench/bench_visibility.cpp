@@ -45,6 +45,7 @@ int main(int argc, char** argv) {
   std::vector<std::string> sizes{"1000", "10000", "100000"}, kinds{"town", "forest"};
   int queries = 40;
   std::uint64_t seed = 1;
+  bench::require_option_pairs(argc, argv, 1, "bench_visibility");
   for (int i = 1; i + 1 < argc; i += 2) {
     if (!std::strcmp(argv[i], "--sizes")) sizes = bench::split(argv[i + 1]);
     else if (!std::strcmp(argv[i], "--kinds")) kinds = bench::split(argv[i + 1]);
