@@ -148,6 +148,38 @@ std::vector<Triple> eee_candidate_triples(const Scene& scene, const SceneAdjacen
   return out;
 }
 
+EeeResult eee_events_of_triples(const Scene& scene, const SceneAdjacency& adj, const TriangleIndex& occluders,
+                                const std::vector<Triple>& triples, bool parallel, std::size_t grain,
+                                const std::string& label, bool progress,
+                                const std::function<void(EeeEvent&)>& on_found) {
+  struct Local {
+    std::vector<EeeEvent> events;
+    EeeStats stats;
+  };
+  tbb::enumerable_thread_specific<Local> locals;
+  ProgressBar bar(label, triples.size(), progress);
+  for_each_index(triples.size(), parallel, grain, [&](std::size_t i) {
+    Local& loc = locals.local();
+    const Triple& t = triples[i];
+    if (auto ev = eee_event(scene, adj, occluders, t[0], t[1], t[2], &loc.stats)) {
+      if (on_found) on_found(*ev);
+      loc.events.push_back(std::move(*ev));
+    }
+    bar.advance();
+  });
+  EeeResult result;
+  for (auto& loc : locals) {
+    for (auto& ev : loc.events) result.events.push_back(std::move(ev));
+    result.stats.eee.triples += loc.stats.triples;
+    result.stats.eee.tangent_triples += loc.stats.tangent_triples;
+    result.stats.eee.occluder_tests += loc.stats.occluder_tests;
+  }
+  // Per-thread lists arrive in any order: sort so the output does not depend on the scheduling.
+  std::sort(result.events.begin(), result.events.end(),
+            [](const EeeEvent& a, const EeeEvent& b) { return a.edges < b.edges; });
+  return result;
+}
+
 EeeResult enumerate_eee_events(const Scene& scene, const EeeOptions& options) {
   const SceneAdjacency adj = build_scene_adjacency(scene);
   const EdgeIndex edges = scene_edge_index(scene, adj);
@@ -155,26 +187,10 @@ EeeResult enumerate_eee_events(const Scene& scene, const EeeOptions& options) {
   EeeResult result;
   const std::vector<Triple> triples = eee_candidate_triples(scene, adj, edges, options, &result.stats);
 
-  struct Local {
-    std::vector<EeeEvent> events;
-    EeeStats stats;
-  };
-  tbb::enumerable_thread_specific<Local> locals;
-  ProgressBar bar("EEE triples", triples.size(), options.progress);
-  auto one = [&](const Triple& t) {
-    Local& loc = locals.local();
-    if (auto ev = eee_event(scene, adj, occluders, t[0], t[1], t[2], &loc.stats)) loc.events.push_back(std::move(*ev));
-    bar.advance();
-  };
-  for_each_index(triples.size(), options.parallel, 64, [&](std::size_t i) { one(triples[i]); });
-  for (auto& loc : locals) {
-    for (auto& ev : loc.events) result.events.push_back(std::move(ev));
-    result.stats.eee.triples += loc.stats.triples;
-    result.stats.eee.tangent_triples += loc.stats.tangent_triples;
-    result.stats.eee.occluder_tests += loc.stats.occluder_tests;
-  }
-  std::sort(result.events.begin(), result.events.end(),
-            [](const EeeEvent& a, const EeeEvent& b) { return a.edges < b.edges; });
+  EeeResult found = eee_events_of_triples(scene, adj, occluders, triples, options.parallel, 64, "EEE triples",
+                                          options.progress);
+  result.events = std::move(found.events);
+  result.stats.eee = found.stats.eee;
   if (options.segment_ends && !result.events.empty()) {
     const TriangleIndex& spatial = occluders;
     const Box3 box = bounding_box(scene);

@@ -13,7 +13,10 @@
 #include "kernel/scene.hpp"
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
+#include <functional>
+#include <string>
 #include <vector>
 
 namespace exactvis {
@@ -47,5 +50,16 @@ EeeResult enumerate_eee_events(const Scene& scene, const EeeOptions& options = {
 std::vector<std::array<int, 3>> eee_candidate_triples(const Scene& scene, const SceneAdjacency& adj,
                                                       const EdgeIndex& edges, const EeeOptions& options,
                                                       EeeEnumerationStats* stats = nullptr);
+
+// The events of given candidate triples (indices into adj.edges): eee_event on each, against the triangles
+// of `occluders` (whose index must be over `scene`), in parallel when `parallel` (tasks of `grain` triples),
+// with a progress bar `label` on stderr when `progress`. `on_found` (may be empty) runs on the worker thread
+// for each event found (e.g. eee_segment_ends). Output: the events sorted by edges (vertex ids) and, in
+// stats.eee, eee_event's statistics summed over the triples (the other stats fields stay zero). Shared by
+// enumerate_eee_events and the shadows' blocker-blocker EEE pass. Cost: one eee_event per triple.
+EeeResult eee_events_of_triples(const Scene& scene, const SceneAdjacency& adj, const TriangleIndex& occluders,
+                                const std::vector<std::array<int, 3>>& triples, bool parallel, std::size_t grain,
+                                const std::string& label, bool progress,
+                                const std::function<void(EeeEvent&)>& on_found = {});
 
 }  // namespace exactvis

@@ -133,30 +133,12 @@ EeeResult blocker_eee_events(const Scene& scene, const std::vector<int>& light, 
   triples.erase(std::unique(triples.begin(), triples.end()), triples.end());
   result.stats.candidate_triples = triples.size();
 
-  struct Found {
-    std::vector<EeeEvent> events;
-    EeeStats stats;
-  };
-  tbb::enumerable_thread_specific<Found> found;
   const Box3 box = bounding_box(scene);
-  ProgressBar tbar("blocker EEE triples", triples.size(), options.progress);
-  for_each_index(triples.size(), options.parallel, 16, [&](std::size_t i) {
-    Found& f = found.local();
-    const Triple& t = triples[i];
-    if (auto ev = eee_event(scene, adj, index, t[0], t[1], t[2], &f.stats)) {
-      eee_segment_ends(scene, index, box, *ev);
-      f.events.push_back(std::move(*ev));
-    }
-    tbar.advance();
-  });
-  for (auto& f : found) {
-    for (auto& ev : f.events) result.events.push_back(std::move(ev));
-    result.stats.eee.triples += f.stats.triples;
-    result.stats.eee.tangent_triples += f.stats.tangent_triples;
-    result.stats.eee.occluder_tests += f.stats.occluder_tests;
-  }
-  std::sort(result.events.begin(), result.events.end(),
-            [](const EeeEvent& a, const EeeEvent& b) { return a.edges < b.edges; });
+  EeeResult found = eee_events_of_triples(scene, adj, index, triples, options.parallel, 16, "blocker EEE triples",
+                                          options.progress,
+                                          [&](EeeEvent& ev) { eee_segment_ends(scene, index, box, ev); });
+  result.events = std::move(found.events);
+  result.stats.eee = found.stats.eee;
   return result;
 }
 
