@@ -3,6 +3,7 @@
 #include "events/interval_end_key.hpp"
 #include "kernel/ray_first_hit.hpp"
 #include "kernel/predicates.hpp"
+#include "util/sub_intervals.hpp"
 
 #include <CGAL/Interval_nt.h>
 
@@ -356,11 +357,7 @@ std::vector<CriticalInterval> split_ev_interval(const Scene& scene, const SceneA
       crossings(fg.first, lo, hi, more);
       crossings(fg.second, lo, hi, more);
       if (!more.empty()) {
-        more.push_back(lo);
-        more.push_back(hi);
-        std::sort(more.begin(), more.end());
-        more.erase(std::unique(more.begin(), more.end()), more.end());
-        for (std::size_t i = more.size() - 1; i > 0; --i) todo.emplace_back(more[i - 1], more[i]);
+        push_sub_intervals(std::move(more), lo, hi, todo);
         continue;
       }
       pieces.push_back({lo, hi, fg.first >= 0 ? scene.triangles[fg.first].id : -1,

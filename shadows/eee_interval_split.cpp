@@ -3,6 +3,7 @@
 #include "kernel/predicates.hpp"
 #include "kernel/ray_first_hit.hpp"
 #include "kernel/rational_between.hpp"
+#include "util/sub_intervals.hpp"
 
 #include <CGAL/Interval_nt.h>
 
@@ -232,11 +233,7 @@ std::vector<EeeEndPiece> split_eee_interval(const Scene& scene, const TriangleIn
         if (o >= 0)
           for (const Poly& p : crossings_of(o)) add_roots(p, lo, hi, more);
       if (!more.empty()) {
-        more.push_back(lo);
-        more.push_back(hi);
-        std::sort(more.begin(), more.end());
-        more.erase(std::unique(more.begin(), more.end()), more.end());
-        for (std::size_t i = more.size() - 1; i > 0; --i) todo.emplace_back(more[i - 1], more[i]);
+        push_sub_intervals(std::move(more), lo, hi, todo);
         continue;
       }
       pieces.push_back({lo, hi, q, f, b});
