@@ -180,7 +180,7 @@ int main(int argc, char** argv) {
     else if (a == "--plane-pair-points") plane_pairs = argv[i + 1];
     else if (a == "--seed") seed = std::strtoull(argv[i + 1], nullptr, 10);
     else if (a == "--repeat") repeat = std::max(1, std::atoi(argv[i + 1]));
-    else return std::fprintf(stderr, "bench_aspect: unknown option %s\n", a.c_str()), 2;
+    else return bench::unknown_option("bench_aspect", a);
   }
   table("orthographic (regions on the viewing sphere; growth = d log time / d log planes)", bench::split(points), seed,
         ViewModel::Orthographic, repeat);

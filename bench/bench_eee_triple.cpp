@@ -32,10 +32,7 @@ int main(int argc, char** argv) {
     else if (a == "--sizes") sizes = bench::split(v);
     else if (a == "--triples") triples = std::atoi(v.c_str());
     else if (a == "--seed") seed = static_cast<unsigned>(std::atoi(v.c_str()));
-    else {
-      std::fprintf(stderr, "unknown option %s\n", a.c_str());
-      return 2;
-    }
+    else return bench::unknown_option("bench_eee_triple", a);
   }
   std::printf("%-8s %9s %8s %10s %10s %8s %10s %12s\n", "kind", "triangles", "triples", "base-valid", "events",
               "occl/tr", "us/triple", "us/event-tr");

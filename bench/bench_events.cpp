@@ -116,10 +116,7 @@ int main(int argc, char** argv) {
     else if (a == "--eee-light") eee_light = bench::split(v);
     else if (a == "--split") split_ev = v != "0";
     else if (a == "--seed") seed = std::stoull(v);
-    else {
-      std::fprintf(stderr, "bench_events: unknown option %s\n", a.c_str());
-      return 1;
-    }
+    else return bench::unknown_option("bench_events", a);
   }
   std::printf("EV and EEE events, both cores (oneTBB); growth = log(time ratio) / log(triangle ratio) vs previous "
               "row; EV intervals %s at end-object changes\n", split_ev ? "split" : "not split");

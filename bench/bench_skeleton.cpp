@@ -95,10 +95,7 @@ int main(int argc, char** argv) {
     if (a == "--polytopes") polytopes = bench::split(v);
     else if (a == "--towns") towns = bench::split(v);
     else if (a == "--seed") seed = std::stoull(v);
-    else {
-      std::fprintf(stderr, "bench_skeleton: unknown option %s\n", a.c_str());
-      return 2;
-    }
+    else return bench::unknown_option("bench_skeleton", a);
   }
   header("full skeleton, k random tetrahedra (growth: exponent of time vs triangles since the previous row)");
   Row prev;

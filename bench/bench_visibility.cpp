@@ -51,10 +51,7 @@ int main(int argc, char** argv) {
     else if (!std::strcmp(argv[i], "--kinds")) kinds = bench::split(argv[i + 1]);
     else if (!std::strcmp(argv[i], "--queries")) queries = std::atoi(argv[i + 1]);
     else if (!std::strcmp(argv[i], "--seed")) seed = std::strtoull(argv[i + 1], nullptr, 10);
-    else {
-      std::fprintf(stderr, "unknown option %s\n", argv[i]);
-      return 2;
-    }
+    else return bench::unknown_option("bench_visibility", std::string(argv[i]));
   }
   std::printf("| scene | triangles | queries | visible | visible ms min/avg/max | hidden ms min/avg/max | "
               "by sampling | avg occluders considered | avg effective occluders | avg splits | "
