@@ -57,6 +57,17 @@ FrontHull front_hull(const std::vector<Vec3<Exact>>& P) {
   return h;
 }
 
+int supporting_side(const Vec3<Exact>& normal, const Vec3<Exact>& origin, const std::vector<Vec3<Exact>>& P) {
+  int side = 0;
+  for (const auto& p : P) {
+    const int sp = CGAL::sign(dot(normal, p - origin));
+    if (sp == 0) continue;
+    if (side == 0) side = sp;
+    else if (sp != side) return 0;
+  }
+  return side;
+}
+
 std::array<int, 2> ev_plane_edge(const Vec3<Exact>& normal, int vertex, const Vec3<Exact>& u, const Vec3<Exact>& w,
                                  const std::vector<std::array<int, 2>>& edges, const std::vector<Vec3<Exact>>& vx) {
   const Vec3<Exact>& a = vx[vertex];

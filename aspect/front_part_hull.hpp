@@ -26,6 +26,10 @@ struct FrontHull {
 // O(|P| log |P|) exact orientation tests).
 FrontHull front_hull(const std::vector<Vec3<Exact>>& P);
 
+// The closed side of the plane {x : normal . (x - origin) = 0} that holds all of P: +1 or -1 (points on the
+// plane allowed), 0 when P has points strictly on both sides or lies in the plane. Exact signs; cost O(|P|).
+int supporting_side(const Vec3<Exact>& normal, const Vec3<Exact>& origin, const std::vector<Vec3<Exact>>& P);
+
 // The scene edge naming the EV plane through the vertex `vertex` (index into vx) and the segment uw (two
 // points of a front part) with normal `normal`: an edge lying in the plane, not through the vertex and not on
 // one line with it, preferring one on the line uw; {-1, -1} when the plane holds none. `edges` are scene

@@ -121,15 +121,8 @@ bool in_hull(const Vec3<Exact>& a, const std::vector<Vec3<Exact>>& P) {
       for (std::size_t k = j + 1; k < m; ++k) {
         const Vec3<Exact> nv = cross(P[j] - P[i], P[k] - P[i]);
         if (nv.x == 0 && nv.y == 0 && nv.z == 0) continue;
-        int side = 0;
-        bool supporting = true;
-        for (const auto& p : P) {
-          const int sp = CGAL::sign(dot(nv, p - P[i]));
-          if (sp == 0) continue;
-          if (side == 0) side = sp;
-          else if (sp != side) { supporting = false; break; }
-        }
-        if (supporting && side != 0 && CGAL::sign(dot(nv, a - P[i])) == -side) return false;
+        const int side = supporting_side(nv, P[i], P);
+        if (side != 0 && CGAL::sign(dot(nv, a - P[i])) == -side) return false;
       }
   return true;
 }
@@ -186,15 +179,8 @@ Setup setup(const Scene& scene, const ClosedSolidFronts& fronts) {
         const Vec3<Exact> nv = cross(P[u] - a, P[w] - a);
         if (nv.x == 0 && nv.y == 0 && nv.z == 0) continue;
         // Supporting: all of P on one closed side of the plane through a, u, w.
-        int side = 0;
-        bool supporting = true;
-        for (const auto& p : P) {
-          const int sp = CGAL::sign(dot(nv, p - a));
-          if (sp == 0) continue;
-          if (side == 0) side = sp;
-          else if (sp != side) { supporting = false; break; }
-        }
-        if (!supporting || side == 0) continue;
+        const int side = supporting_side(nv, a, P);
+        if (side == 0) continue;
         // One constraint per half-space (normal up to positive scaling, and side) and corner.
         int m = 0;
         for (int c = 1; c < 3; ++c)

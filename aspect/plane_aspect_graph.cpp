@@ -205,15 +205,8 @@ Setup setup(const Scene& scene, const ClosedSolidFronts& fronts, const Chart& Q)
       for (const auto& [u, w] : hull.edges) {
         const Vec3<Exact> nv = cross(P[u] - a, P[w] - a);
         if (nv.x == 0 && nv.y == 0 && nv.z == 0) continue;
-        int side = 0;
-        bool supporting = true;
-        for (const auto& p : P) {
-          const int sp = CGAL::sign(dot(nv, p - a));
-          if (sp == 0) continue;
-          if (side == 0) side = sp;
-          else if (sp != side) { supporting = false; break; }
-        }
-        if (!supporting || side == 0) continue;
+        const int side = supporting_side(nv, a, P);
+        if (side == 0) continue;
         const Vec3<Exact> alpha = side > 0 ? nv : -nv;
         cs.push_back(Q.trace(alpha, dot(alpha, a)));
         origin.push_back({k, u, w, alpha});
