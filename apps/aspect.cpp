@@ -143,6 +143,27 @@ std::vector<PngPanel> png_panels(const Scene& scene, const std::vector<int>& val
   return panels;
 }
 
+// The partition picture (sphere or plane) as .vtp, one cell value "region" per triangle, staged in `outputs`.
+void write_partition_vtp(OutputFiles& outputs, const std::string& path, const PartitionPicture& pic) {
+  outputs.write(path, [&](const std::string& temp) {
+    write_surface_with_lines_vtp(temp, pic.points, pic.triangles, pic.triangle_region, pic.curves,
+                                 std::vector<std::int64_t>(pic.curves.size(), -1), "region");
+    return true;
+  });
+}
+
+// The --png panels rendered side by side (480 pixels each), staged in `outputs`.
+void write_partition_png(OutputFiles& outputs, const std::string& path, const std::vector<PngPanel>& panels) {
+  outputs.write(path, [&](const std::string& temp) { return render_panels_png(temp, panels, 480), true; });
+}
+
+// 0, 1, ..., n-1: each triangle its own colour in the model panels.
+std::vector<int> triangle_indices(const Scene& scene) {
+  std::vector<int> values(scene.triangles.size());
+  for (std::size_t i = 0; i < values.size(); ++i) values[i] = static_cast<int>(i);
+  return values;
+}
+
 // Cost warning before the work (docs/cli.md): time scaled from docs/performance.md (bench_aspect: convex
 // models 3.9 CPU s for 186 face planes orthographic, growth below m^3; 7.7 s for 62 planes perspective, below
 // m^4; non-convex closed solids 41 CPU s for 988 great circles, about 4 m^2 cells at 10 us each).
@@ -182,18 +203,8 @@ int run_general_orthographic(const AspectOptions& o, const Scene& scene, const s
     exactvis::app::write_json_output(outputs, o.output, j);
   if (!o.vtp.empty() || !o.png.empty()) {
     const PartitionPicture pic = sphere_picture_of_cells(g, o.vtp.empty() ? 5 : 6);
-    if (!o.vtp.empty())
-      outputs.write(o.vtp, [&](const std::string& temp) {
-        write_surface_with_lines_vtp(temp, pic.points, pic.triangles, pic.triangle_region, pic.curves,
-                                     std::vector<std::int64_t>(pic.curves.size(), -1), "region");
-        return true;
-      });
-    if (!o.png.empty()) {
-      std::vector<int> values(scene.triangles.size());
-      for (std::size_t i = 0; i < values.size(); ++i) values[i] = static_cast<int>(i);
-      const std::vector<PngPanel> panels = png_panels(scene, values, g, &pic, 0);
-      outputs.write(o.png, [&](const std::string& temp) { return render_panels_png(temp, panels, 480), true; });
-    }
+    if (!o.vtp.empty()) write_partition_vtp(outputs, o.vtp, pic);
+    if (!o.png.empty()) write_partition_png(outputs, o.png, png_panels(scene, triangle_indices(scene), g, &pic, 0));
   }
   outputs.commit();
   if (o.json) std::cout << app::json_text(j);
@@ -225,18 +236,8 @@ int run_general_plane(const AspectOptions& o, const Scene& scene, const Exact& h
     const double w = std::max(b.hi.x - b.lo.x, b.hi.y - b.lo.y), h = CGAL::to_double(height);
     const PartitionPicture pic =
         plane_picture_of_cells(g, h, b.lo.x - w, b.lo.y - w, b.hi.x + w, b.hi.y + w, o.vtp.empty() ? 120 : 240);
-    if (!o.vtp.empty())
-      outputs.write(o.vtp, [&](const std::string& temp) {
-        write_surface_with_lines_vtp(temp, pic.points, pic.triangles, pic.triangle_region, pic.curves,
-                                     std::vector<std::int64_t>(pic.curves.size(), -1), "region");
-        return true;
-      });
-    if (!o.png.empty()) {
-      std::vector<int> values(scene.triangles.size());
-      for (std::size_t i = 0; i < values.size(); ++i) values[i] = static_cast<int>(i);
-      const std::vector<PngPanel> panels = png_panels(scene, values, g, &pic, h);
-      outputs.write(o.png, [&](const std::string& temp) { return render_panels_png(temp, panels, 480), true; });
-    }
+    if (!o.vtp.empty()) write_partition_vtp(outputs, o.vtp, pic);
+    if (!o.png.empty()) write_partition_png(outputs, o.png, png_panels(scene, triangle_indices(scene), g, &pic, h));
   }
   outputs.commit();
   if (o.json) std::cout << app::json_text(j);
@@ -295,11 +296,7 @@ int run(const AspectOptions& o) {
       const double w = std::max(b.hi.x - b.lo.x, b.hi.y - b.lo.y);
       pic = plane_picture(model, g, CGAL::to_double(height), b.lo.x - w, b.lo.y - w, b.hi.x + w, b.hi.y + w, 240);
     }
-    outputs.write(o.vtp, [&](const std::string& temp) {
-      write_surface_with_lines_vtp(temp, pic.points, pic.triangles, pic.triangle_region, pic.curves,
-                                   std::vector<std::int64_t>(pic.curves.size(), -1), "region");
-      return true;
-    });
+    write_partition_vtp(outputs, o.vtp, pic);
   }
   if (!o.png.empty()) {
     PartitionPicture partition;
@@ -310,8 +307,7 @@ int run(const AspectOptions& o) {
       const double w = std::max(b.hi.x - b.lo.x, b.hi.y - b.lo.y);
       partition = plane_picture(model, g, CGAL::to_double(height), b.lo.x - w, b.lo.y - w, b.hi.x + w, b.hi.y + w, 120);
     }
-    const std::vector<PngPanel> panels = png_panels(scene, model.plane_of, g, &partition, CGAL::to_double(height));
-    outputs.write(o.png, [&](const std::string& temp) { return render_panels_png(temp, panels, 480), true; });
+    write_partition_png(outputs, o.png, png_panels(scene, model.plane_of, g, &partition, CGAL::to_double(height)));
   }
   outputs.commit();
   if (o.json) std::cout << app::json_text(j);
