@@ -6,6 +6,7 @@
 // Usage: bench_cone_layers [--kinds town,forest] [--sizes 1000,2000] [--threads 1]
 // Compare builds by running this (or `exactvis pvs`) from both under /usr/bin/time in one session.
 #include "bench/bench_util.hpp"
+#include "bench/street_cell.hpp"
 #include "kernel/scene_generators.hpp"
 #include "kernel/predicate_counters.hpp"
 #include "region/cone_vector6.hpp"
@@ -33,10 +34,7 @@ int main(int argc, char** argv) {
   for (const auto& kind : kinds)
     for (const auto& size : sizes) {
       const Scene scene = generate_scene(kind, std::stol(size), 1);
-      const Box3 b = bounding_box(scene);
-      // The street-level cell of bench_pvs and the region tests.
-      const region::RationalBox3 cell =
-          region::exact_box({{b.lo.x + 0.25, b.lo.y + 0.25, 1}, {b.lo.x + 1.5, b.lo.y + 1.5, 2}});
+      const region::RationalBox3 cell = bench::street_cell(scene);
       const region::PvsContext context(scene);
       region::PvsOptions po;
       po.threads = threads;

@@ -14,6 +14,7 @@
 //   default 32). Columns: culled = triangles proved hidden without their own query; by_occl = of those by
 //   one wall / solid; by_virt = by a virtual occluder; boxes = exact hidden-box tests run.
 #include "bench/bench_util.hpp"
+#include "bench/street_cell.hpp"
 #include "kernel/scene_generators.hpp"
 #include "region/cell_visibility.hpp"
 #include "region/exact_pvs.hpp"
@@ -62,10 +63,7 @@ int main(int argc, char** argv) {
   for (const auto& kind : kinds)
     for (const auto& size : sizes) {
       const Scene scene = generate_scene(kind, std::stol(size), 1);
-      const Box3 b = bounding_box(scene);
-      // A street-level cell near one corner (as in the region tests).
-      const region::RationalBox3 cell =
-          region::exact_box({{b.lo.x + 0.25, b.lo.y + 0.25, 1}, {b.lo.x + 1.5, b.lo.y + 1.5, 2}});
+      const region::RationalBox3 cell = bench::street_cell(scene);
       const region::PvsContext context(scene);
       const auto n = static_cast<double>(scene.triangles.size());
       for (const auto& th : threads) {

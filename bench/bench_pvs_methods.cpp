@@ -12,6 +12,7 @@
 //   --scan-max: also time conservative with the scan over all occluders (OccluderSearch::scan, the reference
 //   of the 2D footprint grid) up to M triangles (default 0: not run); its PVS must equal the grid's.
 #include "bench/bench_util.hpp"
+#include "bench/street_cell.hpp"
 #include "kernel/scene_generators.hpp"
 #include "region/conservative_pvs.hpp"
 #include "region/exact_pvs.hpp"
@@ -68,10 +69,7 @@ int main(int argc, char** argv) {
   for (const auto& kind : kinds)
     for (const auto& size : sizes) {
       const Scene scene = generate_scene(kind, std::stol(size), 1);
-      const Box3 b = bounding_box(scene);
-      // A street-level cell near one corner (the cell of bench_pvs).
-      const region::RationalBox3 cell =
-          region::exact_box({{b.lo.x + 0.25, b.lo.y + 0.25, 1}, {b.lo.x + 1.5, b.lo.y + 1.5, 2}});
+      const region::RationalBox3 cell = bench::street_cell(scene);
       const region::PvsContext context(scene);
       const std::size_t n = scene.triangles.size();
       region::PvsOptions po;
