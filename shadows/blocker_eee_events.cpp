@@ -5,6 +5,7 @@
 #include "kernel/predicates.hpp"
 #include "kernel/segment_tetrahedron_intersection.hpp"
 #include "kernel/triangle_index.hpp"
+#include "shadows/light_edge_hull.hpp"
 #include "util/for_each_index.hpp"
 #include "util/progress_bar.hpp"
 
@@ -44,18 +45,9 @@ bool can_be_tangent(const Scene& scene, const SceneEdge& e) {
 // covered by the others unless all five are coplanar: then true, conservatively). Exact.
 bool meets_light_hull(const Point3& p, const Point3& q, const std::array<Point3, 3>& l, const Point3& f0,
                       const Point3& f1) {
-  const std::array<Point3, 5> v{l[0], l[1], l[2], f0, f1};
-  bool any_solid = false;
-  for (int skip = 0; skip < 5; ++skip) {
-    std::array<Point3, 4> t;
-    int k = 0;
-    for (int i = 0; i < 5; ++i)
-      if (i != skip) t[k++] = v[i];
-    if (orient3d(t[0], t[1], t[2], t[3]) == Sign::Zero) continue;
-    any_solid = true;
-    if (segment_meets_tetrahedron(p, q, t[0], t[1], t[2], t[3])) return true;
-  }
-  return !any_solid;
+  return any_light_edge_tetrahedron(l, f0, f1, [&](const std::array<Point3, 4>& t, Sign) {
+    return segment_meets_tetrahedron(p, q, t[0], t[1], t[2], t[3]);
+  });
 }
 
 }  // namespace

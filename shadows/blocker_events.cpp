@@ -6,6 +6,7 @@
 #include "events/tangency.hpp"
 #include "kernel/predicates.hpp"
 #include "kernel/triangle_index.hpp"
+#include "shadows/light_edge_hull.hpp"
 #include "util/for_each_index.hpp"
 #include "util/progress_bar.hpp"
 
@@ -35,22 +36,11 @@ bool plane_meets_triangle(const Point3& v, const Point3& a, const Point3& b, con
 // by Carathéodory, in one of the closed tetrahedra on four of them; all five coplanar: true
 // (conservatively). Exact.
 bool in_light_edge_hull(const Point3& x, const std::array<Point3, 3>& l, const Point3& f0, const Point3& f1) {
-  const std::array<Point3, 5> v{l[0], l[1], l[2], f0, f1};
-  bool any_solid = false;
-  for (int skip = 0; skip < 5; ++skip) {
-    std::array<Point3, 4> t;
-    int k = 0;
-    for (int i = 0; i < 5; ++i)
-      if (i != skip) t[k++] = v[i];
-    const Sign o = orient3d(t[0], t[1], t[2], t[3]);
-    if (o == Sign::Zero) continue;
-    any_solid = true;
+  return any_light_edge_tetrahedron(l, f0, f1, [&](const std::array<Point3, 4>& t, Sign o) {
     // x in the closed tetrahedron: on the inner side (or on) of each face plane.
-    if (orient3d(t[0], t[1], t[2], x) != -o && orient3d(t[0], t[1], x, t[3]) != -o &&
-        orient3d(t[0], x, t[2], t[3]) != -o && orient3d(x, t[1], t[2], t[3]) != -o)
-      return true;
-  }
-  return !any_solid;
+    return orient3d(t[0], t[1], t[2], x) != -o && orient3d(t[0], t[1], x, t[3]) != -o &&
+           orient3d(t[0], x, t[2], t[3]) != -o && orient3d(x, t[1], t[2], t[3]) != -o;
+  });
 }
 
 Box3 box_of(std::initializer_list<Point3> pts) {
