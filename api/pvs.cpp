@@ -35,6 +35,7 @@ PvsAnswer pvs(const Scene& scene, const PvsRequest& request) {
   const auto n = static_cast<std::int64_t>(scene.triangles.size());
   const auto total = n * static_cast<std::int64_t>(request.cells.size());
   std::mutex progress_mutex;
+  std::int64_t reported = 0;  // the workers' counts can arrive out of order: only increases are passed on
   PvsAnswer answer;
   answer.cells.reserve(request.cells.size());
   for (std::size_t c = 0; c < request.cells.size(); ++c) {
@@ -43,10 +44,12 @@ PvsAnswer pvs(const Scene& scene, const PvsRequest& request) {
     if (request.progress)
       options.on_progress = [&](std::int64_t decided) {
         const std::lock_guard<std::mutex> lock(progress_mutex);
-        request.progress(before + decided, total);
+        if (before + decided <= reported) return;
+        reported = before + decided;
+        request.progress(reported, total);
       };
     answer.cells.push_back(region::compute_cell_pvs(request.method, context, request.cells[c], options));
-    if (request.progress) request.progress(before + n, total);
+    if (request.progress && before + n > reported) request.progress(reported = before + n, total);
   }
   return answer;
 }

@@ -36,7 +36,8 @@ struct PvsRequest {
   // (exact: Embree proposals per triangle, --rays), cell_rays (sampled: rays per cell), threads, hierarchy.
   region::PvsOptions options;
   // Called as progress(decided, total) while the cells run: total = cells x scene triangles, decided the
-  // triangles decided so far (finished cells count whole); from worker threads, never concurrently.
+  // triangles decided so far (finished cells count whole), increasing from call to call; from worker
+  // threads, never concurrently.
   std::function<void(std::int64_t decided, std::int64_t total)> progress;
 };
 

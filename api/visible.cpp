@@ -53,14 +53,13 @@ VisibleAnswer visible(const Scene& scene, const VisibleRequest& request) {
   options.query.samples = request.samples;
   options.query.seed = request.seed;
   options.threads = request.threads;
-  std::atomic<std::int64_t> done{0};
+  std::int64_t done = 0;  // counted under the lock, so that the calls see 1, 2, ..., total in order
   std::mutex progress_mutex;
   const auto total = static_cast<std::int64_t>(targets.size());
   if (request.progress)
     options.on_target_done = [&] {
-      const std::int64_t d = ++done;
       const std::lock_guard<std::mutex> lock(progress_mutex);
-      request.progress(d, total);
+      request.progress(++done, total);
     };
   const region::CellVisibility cv =
       region::visibility_from_source(scene, TriangleIndex(scene), request.source, targets, options);

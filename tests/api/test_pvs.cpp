@@ -35,6 +35,7 @@ TEST(ApiPvs, CellsCheckedByOracleAndJson) {
   ASSERT_EQ(a.cells.size(), 2u);
   ASSERT_FALSE(seen.empty());
   EXPECT_EQ(seen.back(), 2 * static_cast<std::int64_t>(scene.triangles.size()));
+  for (std::size_t k = 1; k < seen.size(); ++k) EXPECT_LT(seen[k - 1], seen[k]) << "call " << k;
   const auto os = region_test::oracle_scene(scene);
   const nlohmann::ordered_json j = api::pvs_json(scene, a, "town.obj");
   EXPECT_EQ(j["scene"], "town.obj");
