@@ -5,6 +5,7 @@
 #include "apps/common_options.hpp"
 #include "aspect/convex_aspect_graph.hpp"
 #include "aspect/closed_solid_fronts.hpp"
+#include "aspect/general_orthographic_aspect_graph.hpp"
 #include "aspect/convex_model.hpp"
 #include "aspect/orthographic_aspect_graph.hpp"
 #include "aspect/partition_picture.hpp"
@@ -184,11 +185,47 @@ std::string cost_warning(std::size_t m, ViewModel view, const char* what = "face
   return w.str();
 }
 
-// Orthographic, a closed solid that is not convex (aspect/orthographic_aspect_graph: its front parts must be
-// convex, else a one-line error).
+// Orthographic, a closed solid outside the class of docs/theory.md 10.5 (a front part is not convex):
+// aspect/general_orthographic_aspect_graph, from the free EV arcs and exact per-direction aspects; a model
+// with a free EEE arc gets a one-line error.
+int run_outside_class_orthographic(const AspectOptions& o, const Scene& scene, const std::string& label,
+                                   OutputFiles& outputs) {
+  // Cost (docs/performance.md, bench_aspect --general): the EEE triples grow like e^3 n, the cells like m^2.
+  if (scene.triangles.size() > 60 && !o.quiet)
+    std::cerr << "aspect: warning: " << scene.triangles.size()
+              << " triangles outside the class of docs/theory.md 10.5: the free EEE arcs take O(e^3 n^2) exact "
+                 "tests and every cell an exact aspect; expect minutes (docs/performance.md)"
+              << std::endl;
+  const bool pictures = !o.vtp.empty() || !o.png.empty();
+  const GeneralOrthographicResult r = [&] {
+    app::FractionProgress bar("aspect: arrangement", app::progress_wanted(o.quiet));
+    return general_orthographic_aspect_graph(scene, bar.callback(), pictures);
+  }();
+  if (!r.ok) throw InputError(label + ": " + r.problem);
+  const AspectGraph3& g = r.graph;
+  const ojson j = graph_json(g);
+  if (!o.output.empty()) exactvis::app::write_json_output(outputs, o.output, j);
+  if (pictures) {
+    const PartitionPicture pic = sphere_picture_of_cells(g, o.vtp.empty() ? 5 : 6);
+    if (!o.vtp.empty()) write_partition_vtp(outputs, o.vtp, pic);
+    if (!o.png.empty()) write_partition_png(outputs, o.png, png_panels(scene, triangle_indices(scene), g, &pic, 0));
+  }
+  outputs.commit();
+  if (o.json) std::cout << app::json_text(j);
+  else
+    std::cout << summary(g, "a closed model outside the convex-front class with " +
+                                std::to_string(scene.triangles.size()) + " triangles (" + std::to_string(r.circles) +
+                                " great circles of free EV arcs)")
+              << "\n";
+  return 0;
+}
+
+// Orthographic, a closed solid that is not convex (aspect/orthographic_aspect_graph when its front parts
+// are convex, else run_outside_class_orthographic).
 int run_general_orthographic(const AspectOptions& o, const Scene& scene, const std::string& label,
                              OutputFiles& outputs) {
   const ClosedSolidFronts fronts = closed_solid_fronts(scene);
+  if (!fronts.ok && fronts.outside_class) return run_outside_class_orthographic(o, scene, label, outputs);
   if (!fronts.ok) throw InputError(label + ": " + fronts.problem);
   const std::size_t circles = orthographic_aspect_circles(scene, fronts);
   if (const std::string w = cost_warning(circles, ViewModel::Orthographic, "great circles"); !w.empty() && !o.quiet)
@@ -321,8 +358,8 @@ const exactvis::app::CommandRegistration registration(
       CLI::App* sub = parent.add_subcommand(
           "aspect", "exact aspect graph of a 3D model: regions of viewpoints with one set of visible triangles");
       sub->add_option("scene", opts->scenes, "Scene files (.obj .ply .off .stl), loaded as one scene")->required();
-      auto* ort = sub->add_flag("--orthographic", opts->orthographic, "viewpoints are directions (the viewing sphere); convex models and closed solids whose front parts are convex "
-                                "(docs/theory.md 10.5)");
+      auto* ort = sub->add_flag("--orthographic", opts->orthographic, "viewpoints are directions (the viewing sphere); convex models, closed solids whose front parts are convex "
+                                "(docs/theory.md 10.5) and other closed solids whose free event arcs are EV arcs (10.10)");
       auto* per = sub->add_flag("--perspective", opts->perspective,
                                 "viewpoints are points outside the model (convex models only)");
       auto* pla = sub->add_option("--plane", opts->plane, "viewpoints on the plane z=H (H a number or num/den); convex models and closed solids whose front parts are convex (docs/theory.md 10.8)");

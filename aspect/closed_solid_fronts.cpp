@@ -109,7 +109,7 @@ ClosedSolidFronts closed_solid_fronts(const Scene& scene) {
                              " is not convex (triangle " + std::to_string(scene.triangles[u].id) +
                              "'s plane cuts it): EEE events may change the aspect there, and the orthographic "
                              "aspect graph of such models is not implemented yet",
-               out.fronts.clear(), out;
+               out.outside_class = true, out.fronts.clear(), out;
     }
   }
   out.ok = true;

@@ -29,6 +29,9 @@ struct TriangleFront {
 struct ClosedSolidFronts {
   bool ok = false;
   std::string problem;              // when !ok: why, one line without the file name
+  // When !ok: the model is a valid closed solid and only a front part is not convex (outside the class of
+  // §10.5; aspect/general_orthographic_aspect_graph may still take it).
+  bool outside_class = false;
   std::vector<TriangleFront> fronts;  // per index into scene.triangles
 };
 

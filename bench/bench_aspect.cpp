@@ -4,13 +4,18 @@
 // in the same run. docs/performance.md, "Aspect graphs of convex models". Non-convex models
 // (aspect/orthographic_aspect_graph): two random convex polytopes side by side (each of `--pair-points`
 // points), orthographic; growth against the number of triangles n. `--plane-pair-points`: the same pairs,
-// perspective viewpoints on the plane z = H through both bodies (aspect/plane_aspect_graph).
+// perspective viewpoints on the plane z = H through both bodies (aspect/plane_aspect_graph). `--row-boxes`:
+// k unit boxes in a row with gaps of 1 (outside the class of §10.5 from k = 3), orthographic through
+// aspect/general_orthographic_aspect_graph (free event arcs, then an exact aspect per evaluated cell), with
+// the free-arc time apart and, for k = 2, the ratio to the §10.5 method on the same model.
 //
 // Usage: bench_aspect [--points 8,16,32,64,128] [--perspective-points 8,16,32] [--pair-points 4,6,8,12]
-//                     [--plane-pair-points 4,8] [--seed S] [--repeat R]
+//                     [--plane-pair-points 4,8] [--row-boxes 2,3,4] [--seed S] [--repeat R]
 #include "aspect/convex_aspect_graph.hpp"
 #include "aspect/closed_solid_fronts.hpp"
 #include "aspect/convex_model.hpp"
+#include "aspect/direction_event_arcs.hpp"
+#include "aspect/general_orthographic_aspect_graph.hpp"
 #include "aspect/orthographic_aspect_graph.hpp"
 #include "aspect/plane_aspect_graph.hpp"
 #include "aspect/random_convex_polytope.hpp"
@@ -165,10 +170,75 @@ void plane_pair_table(const std::vector<std::string>& sizes, std::uint64_t seed,
   }
 }
 
+// k unit boxes [2i, 2i+1] x [0,1] x [0,1], 12 outward triangles each.
+Scene row_of_boxes(int k) {
+  std::vector<Point3> v;
+  std::vector<std::array<int, 3>> t;
+  for (int i = 0; i < k; ++i) {
+    const int b = static_cast<int>(v.size());
+    for (int c = 0; c < 8; ++c) v.push_back({double(2 * i + (c & 1)), double((c >> 1) & 1), double((c >> 2) & 1)});
+    const int q[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+    for (const auto& f : q) {
+      t.push_back({b + f[0], b + f[1], b + f[2]});
+      t.push_back({b + f[0], b + f[2], b + f[3]});
+    }
+  }
+  Scene s;
+  s.vertices = v;
+  for (std::size_t i = 0; i < t.size(); ++i) s.triangles.push_back({static_cast<std::int64_t>(i), t[i], 0});
+  s.objects.push_back({"row"});
+  s.faces_read = static_cast<std::int64_t>(t.size());
+  return s;
+}
+
+void row_boxes_table(const std::vector<std::string>& sizes, int repeat) {
+  std::printf("general orthographic (aspect/general_orthographic_aspect_graph): k boxes in a row "
+              "(growth = d log time / d log n)\n%6s %9s %8s %8s %9s %9s %9s %10s %10s %10s %8s %8s\n",
+              "boxes", "triangles", "ev_arcs", "circles", "cells", "evaluated", "regions", "arcs_cpu_s", "cpu_s",
+              "us/cell", "ratio", "growth");
+  double first = 0, prev = 0;
+  std::size_t prev_n = 0;
+  for (std::size_t i = 0; i < sizes.size(); ++i) {
+    const Scene s = row_of_boxes(std::atoi(sizes[i].c_str()));
+    std::vector<double> times, arc_times;
+    GeneralOrthographicResult r;
+    for (int k = 0; k < repeat; ++k) {
+      const double a0 = cpu_now();
+      (void)direction_event_arcs(s);
+      arc_times.push_back(cpu_now() - a0);
+      const double t0 = cpu_now();
+      r = general_orthographic_aspect_graph(s, nullptr, /*with_cells=*/false);
+      times.push_back(cpu_now() - t0);
+    }
+    if (!r.ok) return (void)std::printf("refused: %s\n", r.problem.c_str());
+    std::sort(times.begin(), times.end());
+    std::sort(arc_times.begin(), arc_times.end());
+    const double t = times[times.size() / 2], ta = arc_times[arc_times.size() / 2];
+    const std::size_t cells = r.graph.cells[0] + r.graph.cells[1] + r.graph.cells[2];
+    if (i == 0) first = t;
+    const std::size_t n = s.triangles.size();
+    const double growth = i == 0 ? 0 : std::log(t / prev) / std::log(double(n) / prev_n);
+    std::printf("%6s %9zu %8zu %8zu %9zu %9zu %9zu %10.3f %10.3f %10.1f %8.1f %8.2f\n", sizes[i].c_str(), n,
+                r.ev_arcs, r.circles, cells, r.evaluated_cells, r.graph.regions.size(), ta, t, 1e6 * t / cells,
+                t / first, growth);
+    if (sizes[i] == "2") {  // the same model by the method of §10.5
+      const double t0 = cpu_now();
+      const ClosedSolidFronts f = closed_solid_fronts(s);
+      const AspectGraph3 g = orthographic_aspect_graph(s, f, nullptr, false);
+      const double tc = cpu_now() - t0;
+      std::printf("       two boxes by §10.5: %zu regions in %.4f cpu s; general / §10.5 = %.0f\n", g.regions.size(), tc,
+                  t / tc);
+    }
+    std::fflush(stdout);
+    prev = t;
+    prev_n = n;
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::string points = "8,16,32,64,128", persp = "8,16,32", pairs = "4,6,8,12", plane_pairs;
+  std::string points = "8,16,32,64,128", persp = "8,16,32", pairs = "4,6,8,12", plane_pairs, row_boxes;
   std::uint64_t seed = 1;
   int repeat = 3;
   bench::require_option_pairs(argc, argv, 1, "bench_aspect");
@@ -178,6 +248,7 @@ int main(int argc, char** argv) {
     else if (a == "--perspective-points") persp = argv[i + 1];
     else if (a == "--pair-points") pairs = argv[i + 1];
     else if (a == "--plane-pair-points") plane_pairs = argv[i + 1];
+    else if (a == "--row-boxes") row_boxes = argv[i + 1];
     else if (a == "--seed") seed = std::strtoull(argv[i + 1], nullptr, 10);
     else if (a == "--repeat") repeat = std::max(1, std::atoi(argv[i + 1]));
     else return bench::unknown_option("bench_aspect", a);
@@ -187,5 +258,6 @@ int main(int argc, char** argv) {
   table("perspective (regions of space outside the model)", bench::split(persp), seed, ViewModel::Perspective, repeat);
   pair_table(bench::split(pairs), seed, repeat);
   if (!plane_pairs.empty()) plane_pair_table(bench::split(plane_pairs), seed, repeat);
+  if (!row_boxes.empty()) row_boxes_table(bench::split(row_boxes), repeat);
   return 0;
 }
