@@ -1,12 +1,14 @@
 #pragma once
 // A certified cheap rejection for the convex-solid proof of the conservative PVS (docs/theory.md §5.10,
 // "Fallback"): solid_blocks_box_pair (region/convex_occluder.hpp) needs all 64 corner-to-corner segments
-// between the cell and the target box to meet the closed solid, and a segment whose two ends lie strictly
-// outside one facet plane misses it. This filter looks for such a segment in interval arithmetic (CGAL's
-// Interval_nt, the facets and the cell corners converted once per cell): "misses" is then a proof, so
-// skipping the exact test changes no answer; "may meet" says nothing (the exact test decides). In a forest
-// most tried crowns fail the exact test, and they fail here first at a fraction of its cost (the exact
-// test converts every rational coordinate to an interval on each call).
+// between the cell and the target box to meet the closed solid. This filter runs the clipping of
+// segment_meets_solid on those segments in interval arithmetic (CGAL's Interval_nt; the facets and the cell
+// corners converted once per cell), keeping only the facets whose signs at both ends the intervals decide:
+// dropping a facet only enlarges the parameters left, so an empty parameter set (or both ends strictly
+// outside one facet) proves that the segment misses the solid, and then the exact test would fail. So
+// skipping the exact test on "misses" changes no answer; "may meet" says nothing (the exact test decides).
+// In a forest most tried crowns fail the exact test, and they fail here first at a fraction of its cost
+// (the exact test converts every rational coordinate to an interval on each call).
 #include "region/convex_occluder.hpp"
 
 #include <array>
@@ -24,7 +26,7 @@ class SolidMissFilter {
 
   // True proves that some segment from a corner of the cell to a corner of the box (doubles: its corners
   // are exact) misses solid `k` (one of `listed`), so solid_blocks_box_pair(solid k, cell, box) is false.
-  // False: not proved. Cost: at most 64 x 2F interval dot products.
+  // False: not proved. Cost: 16 F interval dot products and at most 64 F interval divisions (F facets).
   bool proves_miss(std::size_t k, const Box3& box) const;
 
  private:
@@ -32,7 +34,7 @@ class SolidMissFilter {
     double nx_lo, nx_hi, ny_lo, ny_hi, nz_lo, nz_hi, d_lo, d_hi;
   };
   std::vector<std::vector<Facet>> facets_;  // per solid index (empty for solids not listed)
-  std::array<std::array<double, 6>, 8> cell_corners_;  // per corner: x, y, z enclosures (lo, hi)
+  std::array<std::array<double, 6>, 8> cell_corners_{};  // per corner: x, y, z enclosures (lo, hi)
 };
 
 }  // namespace exactvis::region
