@@ -1,16 +1,18 @@
 // bench_pvs_methods: the three PVS methods of `exactvis pvs --method` side by side on generated towns and
 // forests, per cell (issue #12): time and PVS size of exact / sampled / conservative; sampled's false
 // invisible (exact - sampled: the sampler never lists a hidden triangle) at equal time to exact (its ray
-// count set from a short calibration run so that it takes about exact's time); conservative's overestimate
+// count set from a short calibration run so that it takes about exact's CPU time); conservative's overestimate
 // (listed / exact) and its misses (must be 0). Ratios are to exact, measured in the same run. Wall-clock and
 // process CPU seconds (the machine may be shared: CPU seconds are the fairer figure).
 //
 // Usage: bench_pvs_methods [--kinds town,forest] [--sizes 2000,10000] [--threads 2] [--exact-max N]
-//                          [--rays R] [--scan-max M]
+//                          [--rays R] [--scan-max M] [--conservative-max C]
 //   --exact-max: run exact (and sampled at equal time) only up to N triangles (default 10000); above it, only
 //   conservative and sampled with --rays (default 10^6) are timed; --rays 0: no sampled rows at all.
 //   --scan-max: also time conservative with the scan over all occluders (OccluderSearch::scan, the reference
 //   of the 2D footprint grid) up to M triangles (default 0: not run); its PVS must equal the grid's.
+//   --conservative-max: run conservative only up to C triangles (default: always), e.g. for a sampled-only
+//   row of a scene too large to wait for.
 #include "bench/bench_util.hpp"
 #include "bench/street_cell.hpp"
 #include "kernel/scene_generators.hpp"
@@ -53,6 +55,7 @@ int main(int argc, char** argv) {
   long exact_max = 10000;
   std::int64_t rays = 1000000;
   long scan_max = 0;
+  long conservative_max = -1;  // -1: no limit
   bench::require_option_pairs(argc, argv, 1, "bench_pvs_methods");
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string a = argv[i];
@@ -62,6 +65,7 @@ int main(int argc, char** argv) {
     else if (a == "--exact-max") exact_max = std::stol(argv[i + 1]);
     else if (a == "--rays") rays = std::stoll(argv[i + 1]);
     else if (a == "--scan-max") scan_max = std::stol(argv[i + 1]);
+    else if (a == "--conservative-max") conservative_max = std::stol(argv[i + 1]);
     else return bench::unknown_option("bench_pvs_methods", a);
   }
   std::printf("%-7s %8s %-13s %9s %9s %7s %9s %10s %9s\n", "scene", "tris", "method", "wall_s", "cpu_s", "pvs",
@@ -89,9 +93,11 @@ int main(int argc, char** argv) {
         t_exact = timed([&] { exact = region::exact_cell_pvs(context, cell, po); });
         row("exact", t_exact, exact.stats.visible, "1.00", 0, "-");
       }
-      const Timing t_cons = timed([&] { cons = region::conservative_cell_pvs(context, cell, po); });
+      const bool with_cons = conservative_max < 0 || static_cast<long>(n) <= conservative_max;
+      Timing t_cons;
+      if (with_cons) t_cons = timed([&] { cons = region::conservative_cell_pvs(context, cell, po); });
       std::string vs = "-", errors = "-";
-      if (with_exact) {
+      if (with_cons && with_exact) {
         const auto in = membership(n, cons);
         std::int64_t misses = 0;
         for (const auto& v : exact.visible) misses += in[static_cast<std::size_t>(v.index)] ? 0 : 1;
@@ -100,8 +106,8 @@ int main(int argc, char** argv) {
         vs = buf;
         errors = std::to_string(misses) + " miss";
       }
-      row("conservative", t_cons, cons.stats.visible, vs, 0, errors);
-      if (static_cast<long>(n) <= scan_max) {
+      if (with_cons) row("conservative", t_cons, cons.stats.visible, vs, 0, errors);
+      if (with_cons && static_cast<long>(n) <= scan_max) {
         region::CellPvs scan;
         const Timing t_scan = timed([&] { scan = region::conservative_cell_pvs(context, cell, po, region::OccluderSearch::scan); });
         bool same = scan.visible.size() == cons.visible.size();
@@ -117,7 +123,8 @@ int main(int argc, char** argv) {
       region::CellPvs sampled;
       const Timing t_cal = timed([&] { sampled = region::sampled_cell_pvs(context, cell, so); });
       std::int64_t r = rays;
-      if (with_exact) r = std::clamp<std::int64_t>(static_cast<std::int64_t>(100000 * t_exact.wall / std::max(1e-3, t_cal.wall)), 100000, 200000000);
+      // By CPU seconds, not wall: the machine may be shared, and CPU time is what equal cost means.
+      if (with_exact) r = std::clamp<std::int64_t>(static_cast<std::int64_t>(100000 * t_exact.cpu / std::max(1e-3, t_cal.cpu)), 100000, 200000000);
       so.cell_rays = r;
       const Timing t_s = timed([&] { sampled = region::sampled_cell_pvs(context, cell, so); });
       vs = "-", errors = "-";

@@ -129,6 +129,7 @@ SingleOccluderCulling::SingleOccluderCulling(const PvsContext& context, const Ra
     boxes.reserve(usable_solids_.size());
     for (const std::size_t k : usable_solids_) boxes.push_back(solids[k].box);
     solid_grid_ = FootprintGrid(boxes);
+    solid_filter_ = SolidMissFilter(solids, usable_solids_, cell);
   }
 }
 
@@ -275,6 +276,9 @@ bool SingleOccluderCulling::hides(const UmbraTarget& target, const Box3& target_
     if (!segment_near_box(cell_centre, target_centre, solid.box)) return false;
     if (!exact_target) exact_target = exact_box(target_box);
     if (!strictly_apart(*exact_target, solid) || owns_triangle_of(solid)) return false;
+    // A corner-to-corner segment proved (intervals) to miss the solid: the exact test would fail (grid only:
+    // the scan stays the unfiltered reference the tests compare with).
+    if (search_ == OccluderSearch::grid && solid_filter_.proves_miss(k, target_box)) return false;
     exact_tests_.fetch_add(1, std::memory_order_relaxed);
     return solid_blocks_box_pair(solid, cell_, *exact_target);
   };

@@ -11,6 +11,7 @@
 // strictly on the far side of the wall's line, and a solid owning one of the target's triangles is skipped.
 #include "region/cell_pvs.hpp"
 #include "region/footprint_grid.hpp"
+#include "region/solid_miss_filter.hpp"
 #include "region/wall_umbra.hpp"
 
 #include <atomic>
@@ -81,6 +82,7 @@ class SingleOccluderCulling {
   std::vector<std::vector<std::size_t>> partners_;  // per wall: its corner_pairs_ partners (grid search)
   std::vector<std::vector<std::size_t>> links_;     // per wall: usable walls sharing a footprint endpoint
   FootprintGrid wall_grid_, solid_grid_;  // items: positions in usable_walls_ / usable_solids_
+  SolidMissFilter solid_filter_;           // grid search: certified rejection before the exact solid test
   mutable std::atomic<std::int64_t> exact_tests_{0};
 };
 

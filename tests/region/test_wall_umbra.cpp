@@ -297,6 +297,31 @@ TEST(WallUmbra, TwoBuildingsOverlappingAcrossAStreetHideTogether) {
   }
 }
 
+TEST(WallUmbra, AViewOverlapBehindTheViewerIsNoLink) {
+  // The ray-side condition t > 0 of a view overlap (docs/theory.md §5.10, "Certificates for (c)"). A: from
+  // (0, -12) to (2.5, 2); B: y = 1.5 for x in [-1.5, 2]; they do not touch. From the target (a triangle near
+  // (6, 3.3)) the end (2.5, 2) of A is seen in front of B: a true overlap. From the cell [0, 1]^2 the LINE
+  // through a cell point and A's end (0, -12) meets B, but behind the point (t < 0): the two footprints'
+  // arcs are not shown to overlap, and no other end gives an overlap from the cell. So the link is refused,
+  // the chain proof fails, and the triangle is listed (it stays listed: correct, merely conservative).
+  const RationalBox3 cell = exact_box({{0, 0, 0}, {1, 1, 1}});
+  const WallRectangle A{0, -12, 2.5, 2, 0, 10}, B{-1.5, 1.5, 2, 1.5, 0, 10};
+  const UmbraTarget t{{Point3{6, 3.5, 0}, Point3{5.5, 2.5, 0}, Point3{6.5, 4, 0}}, 0, 1};
+  EXPECT_FALSE(wall_hides_exactly(A, cell, t));
+  EXPECT_FALSE(wall_hides_exactly(B, cell, t));
+  EXPECT_FALSE(wall_pair_hides_exactly(A, B, cell, t)) << "no contact";
+  EXPECT_FALSE(wall_chain_hides_exactly({A, B}, {{0, 1}}, cell, t)) << "a link through a ray behind the cell";
+  EXPECT_FALSE(walls_views_may_overlap(A, B, Box3{{0, 0, 0}, {1, 1, 1}}, t)) << "the double proposal applies the same rule";
+  // Without the rule this proof would be accepted; here it would still be right (every attacking segment
+  // meets a wall): the case analysis of §5.10 shows a one-sided t < 0 link forces the walls' lines to cross
+  // on a footprint, as here at (2.41, 1.5) on A. The rule is kept because the chain proof uses it.
+  std::mt19937_64 rng(13);
+  for (int s = 0; s < 300; ++s) {
+    const auto p = random_cell_point(cell, rng), q = random_target_point(t, rng);
+    ASSERT_TRUE(segment_meets_wall(p, q, A) || segment_meets_wall(p, q, B));
+  }
+}
+
 TEST(WallUmbra, ViewOverlapProofsSurviveRandomSegments) {
   // Two walls that do not touch (random near and far segments, integer ends), random cells and targets;
   // every proof linked by a view overlap is attacked with random exact segments, each of which must meet
