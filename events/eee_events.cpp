@@ -1,5 +1,6 @@
 #include "events/eee_events.hpp"
 
+#include "events/eee_line_miss_filter.hpp"
 #include "events/eee_occluder_filter.hpp"
 #include "events/interval_end_key.hpp"
 #include "kernel/ray_first_hit.hpp"
@@ -327,6 +328,14 @@ std::optional<EeeEvent> eee_event(const Scene& scene, const SceneAdjacency& adj,
   // Occluders disjoint from conv(H) block nothing: proved by interval certificates (the filter), the others
   // get the exact analysis below.
   const EeeOccluderFilter hull_filter(H);
+  // Occluders that every line L(t) of the current range [vmin, vmax] misses block nothing: proved by the side
+  // signs of L(t) against their edge lines in interval arithmetic (events/eee_line_miss_filter.hpp).
+  const EeeLineMissFilter line_filter = [&] {
+    std::array<std::array<Exact, 3>, 3> d, m;
+    for (int k = 0; k < 3; ++k)
+      for (int j = 0; j < 3; ++j) d[k][j] = f.Ld[k].c[j], m[k][j] = f.Lm[k].c[j];
+    return EeeLineMissFilter(d, m);
+  }();
   // Large candidates first (a floating-point heuristic for the order only): every few occluders the free set
   // is recomputed; the search stops when it is empty and later occluders only look inside its hull.
   std::vector<std::pair<double, int>> cand;
@@ -350,6 +359,9 @@ std::optional<EeeEvent> eee_event(const Scene& scene, const SceneAdjacency& adj,
     }
     const auto& tr = scene.triangles[ti];
     if (hull_filter.separated(scene.corner(tr, 0), scene.corner(tr, 1), scene.corner(tr, 2))) continue;
+    if (line_filter.misses(scene.corner(tr, 0), scene.corner(tr, 1), scene.corner(tr, 2),
+                           CGAL::to_interval(vmin.t).first, CGAL::to_interval(vmax.t).second))
+      continue;
     Occluder T{ti, tr.id, tr.v, {}};
     for (int k = 0; k < 3; ++k) T.c[k] = to_rational(scene.corner(tr, k));
     const Vec3<Exact> n = cross(T.c[1] - T.c[0], T.c[2] - T.c[0]);

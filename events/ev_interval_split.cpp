@@ -17,7 +17,11 @@ namespace {
 
 using I = CGAL::Interval_nt<>;
 
-// A point of the wedge plane in the coordinates X = V + alpha (A - V) + beta (B - V).
+// A point of the wedge plane in the coordinates X = V + (alpha (A - V) + beta (B - V)) / |n|^2, n = (A - V) x
+// (B - V): the affine coordinates scaled by |n|^2, so that they are dot products of input differences (no
+// division; their rational denominators stay those of the input). Only ratios (t = beta / (alpha + beta),
+// crossing parameters) and comparisons of scaled quantities are used; sigma = alpha + beta is compared with
+// |n|^2 where the affine sum is compared with 1.
 struct P2 {
   Exact alpha, beta;
 };
@@ -97,8 +101,9 @@ std::vector<CriticalInterval> split_ev_interval(const Scene& scene, const SceneA
   const Vec3<Exact> a = to_rational(pa) - V, b = to_rational(pb) - V;
   const Vec3<Exact> n = cross(a, b);
   const Exact nn = dot(n, n);
-  // alpha = ((X - V) x b) . n / |n|^2 = (X - V) . (b x n) / |n|^2, beta = (X - V) . (n x a) / |n|^2.
-  const Vec3<Exact> ca = (Exact(1) / nn) * cross(b, n), cb = (Exact(1) / nn) * cross(n, a);
+  // Affine alpha = ((X - V) x b) . n / |n|^2 = (X - V) . (b x n) / |n|^2, beta = (X - V) . (n x a) / |n|^2;
+  // kept scaled by |n|^2 (P2).
+  const Vec3<Exact> ca = cross(b, n), cb = cross(n, a);
   auto coords = [&](const Vec3<Exact>& x) {
     const Vec3<Exact> r = x - V;
     return P2{dot(r, ca), dot(r, cb)};
@@ -107,7 +112,7 @@ std::vector<CriticalInterval> split_ev_interval(const Scene& scene, const SceneA
   // Interval filter (rigorous enclosures, decides nothing by rounding): the cut of T with the plane lies in
   // the image of T under the affine map X -> (alpha, beta); where sigma = alpha + beta keeps one strict sign
   // over T, t = beta / sigma is monotone along segments, so its range over T lies between the vertices' t.
-  // T is skipped when that range misses [t0, t1], or when 0 < sigma < 1 on all of T (inside the wedge: no
+  // T is skipped when that range misses [t0, t1], or when 0 < sigma < |n|^2 on all of T (inside the wedge: no
   // end object there in a free interval, and its endpoints and crossings are not on a ray).
   using IP = std::array<I, 3>;
   auto iv3 = [](const Vec3<Exact>& x) {
@@ -119,6 +124,7 @@ std::vector<CriticalInterval> split_ev_interval(const Scene& scene, const SceneA
     return r;
   };
   const IP ica = iv3(ca), icb = iv3(cb);
+  const double nn_lo = CGAL::to_interval(nn).first;  // sigma < nn_lo certainly means affine sigma < 1
   const auto it0 = CGAL::to_interval(interval.t0), it1 = CGAL::to_interval(interval.t1);
   auto may_matter = [&](const SceneTriangle& tri) {
     I sig[3], tt[3];
@@ -133,7 +139,7 @@ std::vector<CriticalInterval> split_ev_interval(const Scene& scene, const SceneA
     }
     const bool pos = sig[0].inf() > 0 && sig[1].inf() > 0 && sig[2].inf() > 0;
     const bool neg = sig[0].sup() < 0 && sig[1].sup() < 0 && sig[2].sup() < 0;
-    if (pos && sig[0].sup() < 1 && sig[1].sup() < 1 && sig[2].sup() < 1) return false;  // inside the wedge
+    if (pos && sig[0].sup() < nn_lo && sig[1].sup() < nn_lo && sig[2].sup() < nn_lo) return false;  // inside the wedge
     if (pos || neg) {
       const double lo = std::min({tt[0].inf(), tt[1].inf(), tt[2].inf()});
       const double hi = std::max({tt[0].sup(), tt[1].sup(), tt[2].sup()});
@@ -199,7 +205,7 @@ std::vector<CriticalInterval> split_ev_interval(const Scene& scene, const SceneA
     push(pts.front(), pts.back(), feats.front(), feats.back());
   }
 
-  // (a) endpoints of all segments. Endpoints strictly between V and E (0 < sigma < 1) cannot lie on a line
+  // (a) endpoints of all segments. Endpoints strictly between V and E (0 < sigma < |n|^2) cannot lie on a line
   // of a free interval's interior.
   struct Endpoint {
     Exact t, sigma;
@@ -209,7 +215,7 @@ std::vector<CriticalInterval> split_ev_interval(const Scene& scene, const SceneA
   std::vector<Endpoint> eps;
   auto add_ep = [&](const P2& x, int tri, const OccluderFeature& f) {
     const Exact sigma = x.alpha + x.beta;
-    if (!(sigma >= 1 || CGAL::sign(sigma) < 0)) return;
+    if (!(sigma >= nn || CGAL::sign(sigma) < 0)) return;
     const Exact t = x.beta / sigma;
     if (t > interval.t0 && t < interval.t1) eps.push_back({t, sigma, tri, &f});
   };

@@ -110,18 +110,35 @@ std::optional<R> first_parameter(const Vec3<R>& o, const Vec3<R>& d, const Vec3<
 
 }  // namespace
 
-bool open_segment_meets_triangle(const Vec3<RootNumber>& from, const Vec3<RootNumber>& to, const Point3& a,
-                                 const Point3& b, const Point3& c) {
-  Vec3<Exact> f, t;
-  if (rational_vector(from, &f) && rational_vector(to, &t))  // the kernel's filtered exact test
-    return open_segment_meets_closed_triangle(f, t, RationalPoint3{Exact(a.x), Exact(a.y), Exact(a.z)},
+OpenSegmentTest::OpenSegmentTest(const Vec3<RootNumber>& from, const Vec3<RootNumber>& to) : from_(from), to_(to) {
+  rational_ = rational_vector(from, &from_q_) && rational_vector(to, &to_q_);
+  for (int k = 0; k < 3; ++k) {
+    const auto f = CGAL::to_interval(from[k]), t = CGAL::to_interval(to[k]);
+    lo_hi_from_[k] = {f.first, f.second};
+    lo_hi_to_[k] = {t.first, t.second};
+  }
+}
+
+bool OpenSegmentTest::meets(const Point3& a, const Point3& b, const Point3& c) const {
+  // The interval filter first, for rational segments too: it rejects the triangles the segment passes by
+  // (most of the candidates of a free segment) with no rational arithmetic.
+  const IVec o{I(lo_hi_from_[0][0], lo_hi_from_[0][1]), I(lo_hi_from_[1][0], lo_hi_from_[1][1]),
+               I(lo_hi_from_[2][0], lo_hi_from_[2][1])};
+  const IVec q{I(lo_hi_to_[0][0], lo_hi_to_[0][1]), I(lo_hi_to_[1][0], lo_hi_to_[1][1]),
+               I(lo_hi_to_[2][0], lo_hi_to_[2][1])};
+  if (certainly_misses(o, sub(q, o), &q, a, b, c)) return false;
+  if (rational_)  // the kernel's filtered exact test
+    return open_segment_meets_closed_triangle(from_q_, to_q_, RationalPoint3{Exact(a.x), Exact(a.y), Exact(a.z)},
                                               RationalPoint3{Exact(b.x), Exact(b.y), Exact(b.z)},
                                               RationalPoint3{Exact(c.x), Exact(c.y), Exact(c.z)});
-  // The first point of the ray from `from` through `to` in the triangle, before `to` (interval filter first).
-  const IVec o = enclose(from), q = enclose(to);
-  if (certainly_misses(o, sub(q, o), &q, a, b, c)) return false;
-  const auto s = first_parameter(from, to - from, lift(a), lift(b), lift(c));
+  // The first point of the ray from `from` through `to` in the triangle, before `to`.
+  const auto s = first_parameter(from_, to_ - from_, lift(a), lift(b), lift(c));
   return s && *s < R(1);
+}
+
+bool open_segment_meets_triangle(const Vec3<RootNumber>& from, const Vec3<RootNumber>& to, const Point3& a,
+                                 const Point3& b, const Point3& c) {
+  return OpenSegmentTest(from, to).meets(a, b, c);
 }
 
 bool rational_vector(const Vec3<RootNumber>& v, Vec3<Exact>* out) {

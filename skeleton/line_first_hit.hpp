@@ -7,6 +7,8 @@
 #include "kernel/triangle_index.hpp"
 #include "kernel/vec3.hpp"
 
+#include <array>
+
 namespace exactvis {
 
 // Input: the scene, its spatial index and bounding box (bounding_box(scene)), a point `origin` on or inside
@@ -20,8 +22,28 @@ namespace exactvis {
 std::int64_t line_first_hit(const Scene& scene, const TriangleIndex& index, const Box3& box,
                             const Vec3<RootNumber>& origin, const Vec3<RootNumber>& dir);
 
+// One open segment (from, to) (from != to; coordinates rational or in one Q(sqrt D)) tested against many
+// closed triangles: its interval enclosures and, when rational, its rational endpoints are computed once.
+// meets(a, b, c) is true iff the open segment meets the closed triangle (a, b, c), exactly: an interval
+// filter (docs/theory.md section 9) rejects the triangles the segment certainly misses, the rest go to the
+// exact test (the kernel's filtered rational test, or Q(sqrt D) arithmetic). Cost per triangle: about 40
+// interval operations when rejected. Keeps references to `from` and `to` (which must outlive it). Not
+// thread-safe (RootNumber caches): one object per thread.
+class OpenSegmentTest {
+ public:
+  OpenSegmentTest(const Vec3<RootNumber>& from, const Vec3<RootNumber>& to);
+  bool meets(const Point3& a, const Point3& b, const Point3& c) const;
+
+ private:
+  const Vec3<RootNumber>& from_;
+  const Vec3<RootNumber>& to_;
+  bool rational_ = false;
+  Vec3<Exact> from_q_, to_q_;  // set when rational_
+  std::array<std::array<double, 2>, 3> lo_hi_from_, lo_hi_to_;  // enclosures [lo, hi] per axis
+};
+
 // True iff the open segment (from, to) (from != to) meets the closed triangle (a, b, c), exactly
-// (coordinates rational or in one Q(sqrt D); in Q(sqrt D) an interval filter rejects first).
+// (OpenSegmentTest for one triangle).
 bool open_segment_meets_triangle(const Vec3<RootNumber>& from, const Vec3<RootNumber>& to, const Point3& a,
                                  const Point3& b, const Point3& c);
 

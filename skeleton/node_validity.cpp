@@ -113,6 +113,7 @@ bool node_line_valid(const Scene& scene, const SceneAdjacency& adj, const Triang
     const SceneTriangle& f = scene.triangles[scene.index_of_id(k.faces[0])];
     face_vertices.assign(f.v.begin(), f.v.end());
   }
+  const OpenSegmentTest spanned(node.from, node.to);
   for (const std::int64_t ti : index.candidates_in_box(box)) {
     const SceneTriangle& t = scene.triangles[ti];
     bool incident = false;
@@ -121,7 +122,7 @@ bool node_line_valid(const Scene& scene, const SceneAdjacency& adj, const Triang
       incident = has_corner(t, k.edges[i][0]) && has_corner(t, k.edges[i][1]);
     for (int v : face_vertices) incident = incident || has_corner(t, v);
     if (incident) continue;
-    if (open_segment_meets_triangle(node.from, node.to, scene.corner(t, 0), scene.corner(t, 1), scene.corner(t, 2)))
+    if (spanned.meets(scene.corner(t, 0), scene.corner(t, 1), scene.corner(t, 2)))
       return false;
   }
   return true;

@@ -1,5 +1,6 @@
-// line_first_hit and open_segment_meets_triangle on rays and segments in Q(sqrt D) (the spatial cover and
-// the interval filter in front of the exact test) against an oracle written here: its own Q(sqrt D)
+// line_first_hit and open_segment_meets_triangle on rays and segments in Q(sqrt D) and in Q (the spatial cover
+// and the interval filter in front of the exact test; rational rays go through kernel/ray_first_hit, rational
+// segments through the filter, then the kernel's test) against an oracle written here: its own Q(sqrt D)
 // arithmetic on GMP rationals and no exactvis geometry. The oracle tests every triangle: a ray crossing a
 // triangle's plane is decided by the crossing point's edge signs; a ray in the plane by the candidate
 // parameters where it meets the three edge lines, each tested exactly and with the midpoints between them
@@ -148,12 +149,13 @@ RootNumber to_root(const QD& x, const Q& D) {
 Vec3<RootNumber> to_root(const QD3& v, const Q& D) { return {to_root(v[0], D), to_root(v[1], D), to_root(v[2], D)}; }
 
 // Rays and segments of one scene: random and adversarial, every origin a convex combination of scene points
-// with an irrational weight (so it lies in the scene box and is irrational).
+// with an irrational weight (so it lies in the scene box and is irrational), or with `rational` a rational
+// weight and rational directions (the node lines through vertices and VEE lines).
 struct Cases {
   int rays = 0, hits = 0, coplanar = 0, segments = 0, segment_hits = 0;
 };
 
-Cases run_scene(const Scene& scene, unsigned seed, int count) {
+Cases run_scene(const Scene& scene, unsigned seed, int count, bool rational = false) {
   std::mt19937 rng(seed);
   const TriangleIndex index(scene);
   const Box3 box = bounding_box(scene);
@@ -165,11 +167,13 @@ Cases run_scene(const Scene& scene, unsigned seed, int count) {
   for (int i = 0; i < count; ++i) {
     Field f{roots[i % 3]};
     // lambda = w/16 + sqrt(D)/16 in (0, 1)
-    auto lam = [&] { return QD{Q(weight(rng), 16), Q(1, 16)}; };
+    auto lam = [&] { return QD{Q(weight(rng), 16), Q(rational ? 0 : 1, 16)}; };
     auto point = [&](int v) { return lift(scene.vertices[v]); };
     auto between = [&](const QD3& p, const QD3& q) { return f.add(p, f.scale(lam(), f.sub(q, p))); };
     auto random_dir = [&] {
-      return QD3{QD{small(rng), Q(small(rng), 4)}, QD{small(rng), Q(small(rng), 4)}, QD{small(rng), Q(small(rng), 4)}};
+      const int r = rational ? 0 : 1;
+      return QD3{QD{small(rng), Q(r * small(rng), 4)}, QD{small(rng), Q(r * small(rng), 4)},
+                 QD{small(rng), Q(r * small(rng), 4)}};
     };
     const SceneTriangle& t = scene.triangles[pick_t(rng)];
     const QD3 a = point(t.v[0]), b = point(t.v[1]), cc = point(t.v[2]);
@@ -189,7 +193,8 @@ Cases run_scene(const Scene& scene, unsigned seed, int count) {
         break;
       case 3:  // in a triangle's plane, from a point of the triangle
         o = between(between(a, b), cc);
-        d = f.add(f.scale(QD{Q(small(rng)), Q(1, 3)}, f.sub(b, a)), f.scale(QD{Q(small(rng)), 0}, f.sub(cc, a)));
+        d = f.add(f.scale(QD{Q(small(rng)), Q(rational ? 0 : 1, 3)}, f.sub(b, a)),
+                  f.scale(QD{Q(small(rng)), 0}, f.sub(cc, a)));
         break;
       case 4:  // from a point of a triangle, anywhere
         o = between(between(a, b), cc);
@@ -202,7 +207,7 @@ Cases run_scene(const Scene& scene, unsigned seed, int count) {
     }
     if (f.sign(d[0]) == 0 && f.sign(d[1]) == 0 && f.sign(d[2]) == 0) continue;
     const bool irrational = o[0].b != 0 || o[1].b != 0 || o[2].b != 0 || d[0].b != 0 || d[1].b != 0 || d[2].b != 0;
-    if (!irrational) continue;
+    if (irrational == rational) continue;
     ++c.rays;
     const std::int64_t want = oracle_first_hit(f, scene, o, d);
     const std::int64_t got = line_first_hit(scene, index, box, to_root(o, f.D), to_root(d, f.D));
@@ -256,5 +261,24 @@ TEST(LineFirstHit, IrrationalRaysMatchTheOracleOnClosedMeshes) {
   EXPECT_GT(c.segment_hits, 0);
 }
 
+TEST(LineFirstHit, RationalRaysAndSegmentsMatchTheOracle) {
+  // Rational segments take the interval filter before the kernel's exact test (node validity's spanned
+  // segments through vertices and VEE lines): on soups, and on closed meshes with shared edges and coplanar
+  // faces, where segments start on triangles, run along edges and lie in faces' planes.
+  Scene mesh = spread_scene(7, 12, true);
+  skeleton_test::add_box(mesh, {20, 20, 20}, {26, 26, 26}, "box");
+  skeleton_test::add_box(mesh, {20, 20, 28}, {26, 26, 34}, "box2");
+  const Cases m = run_scene(mesh, 500, 300, true);
+  EXPECT_GT(m.rays, 250);
+  EXPECT_GT(m.hits, m.rays / 10);
+  EXPECT_LT(m.hits, m.rays);
+  EXPECT_GT(m.segment_hits, m.segments / 1000);
+  const Cases c = run_scene(spread_scene(3, 60, false), 600, 300, true);
+  EXPECT_GT(c.rays, 250);
+  EXPECT_GT(c.hits, c.rays / 10);
+  EXPECT_GT(c.segment_hits, 0);
+}
+
 }  // namespace
 }  // namespace exactvis
+
