@@ -101,9 +101,23 @@ class PairQuery {
     }
     if (k == occ.edges.size()) return;  // every edge passed on one side: the lines hit the occluder
     const ConeVector6& w = occ.edges[k];
-    const HalfspaceRelation r = relation_to_halfspace(cone, w);
+    // The ray signs once: they give the relation and, when w crosses the cone through its rays, both parts
+    // (split_crossing: the same cones as intersecting with w and with -w, for about half the work).
+    const HyperplaneSigns signs = hyperplane_signs(cone, w);
+    const HalfspaceRelation r = signs.relation;
     if (r == HalfspaceRelation::Inside) return split(std::move(cone), std::move(t), occ, k + 1, true, neg, out);
     if (r == HalfspaceRelation::Outside) return split(std::move(cone), std::move(t), occ, k + 1, pos, true, out);
+    if (!signs.by_lineality) {
+      std::array<PolyhedralCone6, 2> parts = split_crossing(cone, w, signs);
+      for (int side = 0; side < 2; ++side) {
+        ++stats_.splits;
+        ++stats_.cones_created;
+        RealLineTest pt = test(parts[side]);
+        if (!pt.has_real_lines) continue;
+        split(std::move(parts[side]), std::move(pt), occ, k + 1, pos || side == 0, neg || side == 1, out);
+      }
+      return;
+    }
     for (int s : {+1, -1}) {
       ++stats_.splits;
       auto part = intersect_open_halfspace(cone, s > 0 ? w : w.negated());

@@ -2,7 +2,10 @@
 
 #include "kernel/filtered_predicate.hpp"
 
+#include <CGAL/Mpzf.h>
+
 #include <array>
+#include <cmath>
 #include <optional>
 #include <type_traits>
 #include <utility>
@@ -13,45 +16,87 @@ std::vector<Plane3> shaft_planes(const StabbingPair& pair) {
   std::vector<RationalPoint3> pts = pair.source;
   pts.insert(pts.end(), pair.target.begin(), pair.target.end());
   std::vector<Plane3> planes{pair.source_plane, pair.target_plane};
-  auto consider = [&](const Polygon3& edges_of, const Polygon3& vertices_of) {
+  // edges_at: offset of edges_of in pts, vertices_at: that of vertices_of.
+  auto consider = [&](const Polygon3& edges_of, std::size_t edges_at, const Polygon3& vertices_of,
+                      std::size_t vertices_at) {
     for (std::size_t i = 0; i < edges_of.size(); ++i) {
+      const std::size_t i1 = (i + 1) % edges_of.size();
       const auto& a = edges_of[i];
-      const auto& b = edges_of[(i + 1) % edges_of.size()];
-      for (const auto& c : vertices_of) {
+      const auto& b = edges_of[i1];
+      for (std::size_t ci = 0; ci < vertices_of.size(); ++ci) {
+        const auto& c = vertices_of[ci];
         if (collinear(a, b, c)) continue;
         const Plane3 pl = plane_through(a, b, c);
         bool pos = false, neg = false;
-        for (const auto& p : pts) {
-          const Sign s = plane_side(pl, p);
+        for (std::size_t pi = 0; pi < pts.size(); ++pi) {
+          // a, b, c lie on the plane by construction (side 0, which sets neither flag): not evaluated.
+          if (pi == edges_at + i || pi == edges_at + i1 || pi == vertices_at + ci) continue;
+          const Sign s = plane_side(pl, pts[pi]);
           pos |= s == Sign::Positive;
           neg |= s == Sign::Negative;
+          if (pos && neg) break;  // not a supporting plane: the remaining signs cannot change that
         }
         if (pos && neg) continue;
         planes.push_back(neg ? pl.flipped() : pl);
       }
     }
   };
-  consider(pair.source, pair.target);
-  consider(pair.target, pair.source);
+  consider(pair.source, 0, pair.target, pair.source.size());
+  consider(pair.target, pair.source.size(), pair.source, 0);
   return planes;
 }
 
 namespace {
 
-// A shaft plane tested against many scene corners: its coefficients' enclosures are computed once. The side
-// test is the named, counted predicate `shaft_plane_side` (the three layers of kernel/filtered_predicate.hpp;
-// the same value as plane_side, whose generic form converts the coefficients on every call).
+// A shaft plane tested against many scene corners: its coefficients are converted once. The side test is the
+// named, counted predicate `shaft_plane_side` (the three layers of kernel/filtered_predicate.hpp; the same
+// value as plane_side, whose generic form converts the coefficients on every call).
+// Layer 1 is a hand-written semi-static filter (docs/theory.md §5.4): the value in plain doubles from the
+// coefficients rounded once, certified when its magnitude exceeds 2^-48 times the sum of the terms'
+// magnitudes (the coefficient rounding, < 2 ulps each, and the 4 roundings of the evaluation are < 8 u of
+// that sum; 2^-48 = 32 u leaves a wide margin), plus 2^-1000 for underflow. When every coefficient is a
+// double exactly (the common case on scenes with coordinates on a binary grid), layers 2 and 3 evaluate the
+// same double expression in interval arithmetic (a corner on the plane then gives an exact [0, 0]) and in
+// CGAL::Mpzf, without GMP rationals.
 struct ShaftPlane {
   Plane3 exact;
   std::array<std::pair<double, double>, 4> enclosures;  // normal x, y, z and offset
+  std::array<double, 4> approx;                          // the same, rounded to doubles
+  bool filter_usable = false;  // every approx finite (else layer 1 is skipped)
+  bool doubles_exact = false;  // every approx equals its coefficient exactly
   explicit ShaftPlane(const Plane3& p)
       : exact(p),
         enclosures{enclosing_interval(p.normal.x), enclosing_interval(p.normal.y), enclosing_interval(p.normal.z),
-                   enclosing_interval(p.offset)} {}
+                   enclosing_interval(p.offset)},
+        approx{CGAL::to_double(p.normal.x), CGAL::to_double(p.normal.y), CGAL::to_double(p.normal.z),
+               CGAL::to_double(p.offset)} {
+    filter_usable = true;
+    for (const double a : approx) filter_usable = filter_usable && std::isfinite(a) && std::fabs(a) < 0x1p500;
+    doubles_exact = filter_usable && Exact(approx[0]) == p.normal.x && Exact(approx[1]) == p.normal.y &&
+                    Exact(approx[2]) == p.normal.z && Exact(approx[3]) == p.offset;
+  }
+  // Layer 1: the certified sign, or nullopt.
+  std::optional<Sign> semi_static(const Point3& x) const {
+    if (!filter_usable) return std::nullopt;
+    const double t0 = approx[0] * x.x, t1 = approx[1] * x.y, t2 = approx[2] * x.z;
+    const double v = (t0 + t1) + (t2 - approx[3]);
+    const double bound = 0x1p-48 * ((std::fabs(t0) + std::fabs(t1)) + (std::fabs(t2) + std::fabs(approx[3]))) +
+                         0x1p-1000;
+    if (!(std::fabs(bound) < 0x1p900)) return std::nullopt;  // also catches NaN and infinity
+    if (v > bound) return Sign::Positive;
+    if (v < -bound) return Sign::Negative;
+    return std::nullopt;
+  }
   // sign(exact.value(x))
   Sign side(const Point3& x) const {
     static PredicateCounter counter("shaft_plane_side");
-    return filtered_sign(counter, [&](auto nt) {
+    auto semi = [&] { return semi_static(x); };
+    if (doubles_exact)
+      return filtered_sign_with<CGAL::Mpzf>(counter, semi, [&](auto nt) {
+        using NT = typename decltype(nt)::type;
+        return NT(approx[0]) * NT(x.x) + NT(approx[1]) * NT(x.y) + NT(approx[2]) * NT(x.z) - NT(approx[3]);
+      });
+    return filtered_sign_with(counter, semi, [&](auto nt) {
       using NT = typename decltype(nt)::type;
       if constexpr (std::is_same_v<NT, Exact>) {
         return exact.value(to_rational(x));

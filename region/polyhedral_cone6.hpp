@@ -8,9 +8,11 @@
 // Prodon 1996): rays on the kept side stay, new rays are positive combinations of adjacent pairs across the
 // hyperplane (combinatorial adjacency test).
 #include "region/cone_vector6.hpp"
+#include "region/incidence_set.hpp"
 
-#include <boost/dynamic_bitset.hpp>
+#include <boost/container/small_vector.hpp>
 
+#include <array>
 #include <optional>
 #include <vector>
 
@@ -23,7 +25,7 @@ struct PolyhedralCone6 {
   std::vector<ConeVector6> constraints;
   // Closure of K = cone(rays) + span(lineality).
   std::vector<ConeVector6> rays;
-  std::vector<boost::dynamic_bitset<>> incidence;  // incidence[r][i] <=> constraints[i] . rays[r] == 0
+  std::vector<IncidenceSet> incidence;  // incidence[r][i] <=> constraints[i] . rays[r] == 0
   std::vector<ConeVector6> lineality;              // basis; every constraint vanishes on it
 };
 
@@ -45,6 +47,24 @@ HalfspaceRelation relation_to_halfspace(const PolyhedralCone6& cone, const IntVe
 // the adjacent pairs that are combined.
 std::optional<PolyhedralCone6> intersect_open_halfspace(const PolyhedralCone6& cone, const ConeVector6& w);
 std::optional<PolyhedralCone6> intersect_open_halfspace(const PolyhedralCone6& cone, const IntVec6& w);
+
+// The signs of w . r for every ray r of K, computed once, and the relation they give (the same as
+// relation_to_halfspace). by_lineality: some lineality direction has w . b != 0 (then relation is Crossing
+// and ray_signs is left empty). Cost: one layered sign per ray (and per lineality direction).
+struct HyperplaneSigns {
+  HalfspaceRelation relation = HalfspaceRelation::Outside;
+  bool by_lineality = false;
+  boost::container::small_vector<signed char, 64> ray_signs;
+};
+HyperplaneSigns hyperplane_signs(const PolyhedralCone6& cone, const ConeVector6& w);
+
+// Both parts of a cone the hyperplane w . x = 0 crosses through its rays (signs.relation == Crossing and
+// !signs.by_lineality): [0] = intersect_open_halfspace(cone, w), [1] = intersect_open_halfspace(cone,
+// w.negated()), the same cones (constraints, rays in the same order, incidences). Each new ray on the
+// hyperplane is computed once for both parts (the combination of an adjacent pair is the same vector from
+// either side), and adjacency is tested once per pair. Cost: about half of the two calls.
+std::array<PolyhedralCone6, 2> split_crossing(const PolyhedralCone6& cone, const ConeVector6& w,
+                                              const HyperplaneSigns& signs);
 
 // An interior point of K (sum of the rays; lineality adds nothing needed). Requires rays non-empty or
 // lineality == whole space.

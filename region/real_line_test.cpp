@@ -1,5 +1,7 @@
 #include "region/real_line_test.hpp"
 
+#include <boost/dynamic_bitset.hpp>
+
 #include <deque>
 #include <set>
 #include <stdexcept>
@@ -70,15 +72,15 @@ bool solve(std::vector<std::vector<mpq_class>> m, std::vector<mpq_class> rhs, st
 
 struct SignSearch {
   bool have_pos = false, have_neg = false;
-  IntVec6 pos{}, neg{};
+  ConeVector6 pos{}, neg{};
   bool done() const { return have_pos && have_neg; }
   void offer(const IntVec6& x) {
     if (done()) return;
-    take(plucker_form_sign(x, approximate(x)), [&] { return x; });
+    take(plucker_form_sign(x, approximate(x)), [&] { return ConeVector6(x); });
   }
   void offer(const ConeVector6& x) {
     if (done()) return;
-    take(plucker_form_sign(x), [&] { return x.to_gmp(); });
+    take(plucker_form_sign(x), [&] { return x; });
   }
   template <class Value>
   void take(int s, Value&& value) {
@@ -94,24 +96,24 @@ struct SignSearch {
 
 // A point a*ri + b*rj (a, b >= 0) where q has sign `want` (+1/-1), if the 2D cone has one.
 // The signs are layered first (filter, fixed, gmp); GMP values only for a combination.
-std::optional<IntVec6> pair_point(const ConeVector6& rci, const ConeVector6& rcj, int want) {
+std::optional<ConeVector6> pair_point(const ConeVector6& rci, const ConeVector6& rcj, int want) {
   // want*q(a ri + b rj) = a^2 qi + a b s + b^2 qj ; look for a value > 0.
   const int sqi = want * plucker_form_sign(rci);
-  if (sqi > 0) return rci.to_gmp();
+  if (sqi > 0) return rci;
   const int sqj = want * plucker_form_sign(rcj);
-  if (sqj > 0) return rcj.to_gmp();
+  if (sqj > 0) return rcj;
   if (want * side_sign(rci, rcj) <= 0) return std::nullopt;
   const IntVec6 ri = rci.to_gmp(), rj = rcj.to_gmp();
   const mpz_class qi = want * plucker_form(ri), qj = want * plucker_form(rj), s = want * side6(ri, rj);
   if (sgn(qi) == 0) {  // a = 1, b large: b s + b^2 qj > 0 for b = 1 + floor(-qj... ) pick b with b (s + b qj) > 0
-    if (sgn(qj) == 0) return combine(1, ri, 1, rj);
+    if (sgn(qj) == 0) return ConeVector6(combine(1, ri, 1, rj));
     // qj < 0: b = s / (2 |qj|) makes s + b qj = s/2 > 0
-    return combine(2 * (-qj), ri, s, rj);
+    return ConeVector6(combine(2 * (-qj), ri, s, rj));
   }
-  if (sgn(qj) == 0) return combine(s, ri, 2 * (-qi), rj);
+  if (sgn(qj) == 0) return ConeVector6(combine(s, ri, 2 * (-qi), rj));
   // qi, qj < 0: positive values exist iff s^2 > 4 qi qj; then at a = s, b = -2 qi: a^2 qi + ab s + b^2 qj =
   // s^2 qi - 2 qi s^2 + 4 qi^2 qj = -qi (s^2 - 4 qi qj) > 0.
-  if (s * s > 4 * qi * qj) return combine(s, ri, -2 * qi, rj);
+  if (s * s > 4 * qi * qj) return ConeVector6(combine(s, ri, -2 * qi, rj));
   return std::nullopt;
 }
 

@@ -21,9 +21,10 @@ namespace exactvis::region {
 
 struct RealLineTest {
   bool has_real_lines = false;
-  // When has_real_lines: points of the closure of K with q > 0 and q < 0.
-  IntVec6 positive_point{};
-  IntVec6 negative_point{};
+  // When has_real_lines: points of the closure of K with q > 0 and q < 0 (ConeVector6: the common case, a
+  // ray of the cone, is a copy without GMP; to_gmp() gives the integers).
+  ConeVector6 positive_point{};
+  ConeVector6 negative_point{};
   // Which step decided (1 lineality, 2 rays, 3 pairs, 4 faces) and how many faces step 4 examined.
   int decided_by = 0;
   std::int64_t faces_examined = 0;

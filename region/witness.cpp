@@ -3,6 +3,9 @@
 #include "kernel/round_to_doubles.hpp"
 #include "kernel/segment_triangle_intersection.hpp"
 
+#include <algorithm>
+#include <array>
+
 namespace exactvis::region {
 namespace {
 
@@ -58,8 +61,8 @@ std::optional<Witness> line_in_cone(const PolyhedralCone6& cone, const RealLineT
     const long factor = 1 + static_cast<long>(rng() % 7);
     for (int k = 0; k < 6; ++k) c[k] += r[k] * factor;
   }
-  const IntVec6 a = push_inside(test.positive_point, c, +1);
-  const IntVec6 b = push_inside(test.negative_point, c, -1);
+  const IntVec6 a = push_inside(test.positive_point.to_gmp(), c, +1);
+  const IntVec6 b = push_inside(test.negative_point.to_gmp(), c, -1);
   mpq_class lo = 0, hi = 1;
   for (int iter = 1; iter <= 2048; ++iter) {
     const mpq_class mid = (lo + hi) / 2;
@@ -97,8 +100,24 @@ std::optional<Witness> round_witness(const Scene& scene, const CandidateFinder& 
 
 bool segment_is_free(const Scene& scene, const std::vector<std::int64_t>& candidates, const RationalPoint3& p,
                      const RationalPoint3& q, std::int64_t skip) {
+  // A box of doubles enclosing the closed segment: a triangle whose (double) bounding box misses it cannot
+  // meet the segment, so it is skipped before the exact test and its conversion to rationals (most
+  // candidates of a query box lie far from any one segment). The answer is unchanged.
+  std::array<double, 3> lo, hi;
+  for (int k = 0; k < 3; ++k) {
+    const auto ep = enclosing_interval(p[k]), eq = enclosing_interval(q[k]);
+    lo[static_cast<std::size_t>(k)] = std::min(ep.first, eq.first);
+    hi[static_cast<std::size_t>(k)] = std::max(ep.second, eq.second);
+  }
   for (const std::int64_t idx : candidates) {
     if (idx == skip) continue;
+    const SceneTriangle& st = scene.triangles[static_cast<std::size_t>(idx)];
+    bool apart = false;
+    for (int k = 0; k < 3 && !apart; ++k) {
+      const double a = scene.corner(st, 0)[k], b = scene.corner(st, 1)[k], c = scene.corner(st, 2)[k];
+      apart = std::max({a, b, c}) < lo[static_cast<std::size_t>(k)] || std::min({a, b, c}) > hi[static_cast<std::size_t>(k)];
+    }
+    if (apart) continue;
     const auto t = triangle_points(scene, idx);
     if (open_segment_meets_closed_triangle(p, q, t[0], t[1], t[2])) return false;
   }

@@ -214,3 +214,50 @@ TEST(PolyhedralCone6, RaysMatchBruteForceEnumeration) {
   }
   EXPECT_GT(compared, 50);
 }
+
+namespace {
+
+void expect_same_cone(const PolyhedralCone6& a, const PolyhedralCone6& b) {
+  ASSERT_EQ(a.constraints.size(), b.constraints.size());
+  for (std::size_t i = 0; i < a.constraints.size(); ++i) EXPECT_TRUE(a.constraints[i] == b.constraints[i]);
+  ASSERT_EQ(a.rays.size(), b.rays.size());
+  for (std::size_t i = 0; i < a.rays.size(); ++i) EXPECT_TRUE(a.rays[i] == b.rays[i]) << "ray " << i;
+  ASSERT_EQ(a.incidence.size(), b.incidence.size());
+  for (std::size_t i = 0; i < a.incidence.size(); ++i) EXPECT_TRUE(a.incidence[i] == b.incidence[i]);
+  ASSERT_EQ(a.lineality.size(), b.lineality.size());
+  for (std::size_t i = 0; i < a.lineality.size(); ++i) EXPECT_TRUE(a.lineality[i] == b.lineality[i]);
+}
+
+}  // namespace
+
+// split_crossing gives exactly the two cones of intersect_open_halfspace with w and with -w (same rays in the
+// same order: the PVS's witnesses depend on the order), and hyperplane_signs the relation of
+// relation_to_halfspace, on random cones and random cutting hyperplanes.
+TEST(PolyhedralCone6, SplitCrossingEqualsBothHalfspaceIntersections) {
+  std::mt19937_64 rng(4242);
+  int crossings = 0;
+  for (int trial = 0; trial < 300; ++trial) {
+    std::optional<PolyhedralCone6> cone = whole_space_cone();
+    const int n = 3 + static_cast<int>(rng() % 10);
+    for (int i = 0; i < n && cone; ++i) {
+      const IntVec6 w = random_vec(rng, 4);
+      if (!is_zero(w)) cone = intersect_open_halfspace(*cone, w);
+    }
+    if (!cone) continue;
+    for (int cut = 0; cut < 4; ++cut) {
+      const IntVec6 wg = random_vec(rng, 5);
+      if (is_zero(wg)) continue;
+      const ConeVector6 w(wg);
+      const HyperplaneSigns signs = hyperplane_signs(*cone, w);
+      EXPECT_EQ(signs.relation, relation_to_halfspace(*cone, w));
+      if (signs.relation != HalfspaceRelation::Crossing || signs.by_lineality) continue;
+      ++crossings;
+      const auto parts = split_crossing(*cone, w, signs);
+      const auto plus = intersect_open_halfspace(*cone, w), minus = intersect_open_halfspace(*cone, w.negated());
+      ASSERT_TRUE(plus && minus);
+      expect_same_cone(parts[0], *plus);
+      expect_same_cone(parts[1], *minus);
+    }
+  }
+  EXPECT_GT(crossings, 200);
+}

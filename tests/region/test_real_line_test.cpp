@@ -54,10 +54,10 @@ TEST(RealLineTest, CertificatesAndSamplingAgree) {
     if (t.decided_by == 4) ++by_faces;
     if (t.has_real_lines) {
       ++with_lines;
-      EXPECT_TRUE(in_closure(*cone, t.positive_point));
-      EXPECT_TRUE(in_closure(*cone, t.negative_point));
-      EXPECT_GT(sgn(plucker_form(t.positive_point)), 0);
-      EXPECT_LT(sgn(plucker_form(t.negative_point)), 0);
+      EXPECT_TRUE(in_closure(*cone, t.positive_point.to_gmp()));
+      EXPECT_TRUE(in_closure(*cone, t.negative_point.to_gmp()));
+      EXPECT_GT(sgn(plucker_form(t.positive_point.to_gmp())), 0);
+      EXPECT_LT(sgn(plucker_form(t.negative_point.to_gmp())), 0);
     } else {
       ++without;
       EXPECT_FALSE(sampled_real_line_inside(constraints, rng, 3000)) << "trial " << trial;
@@ -102,8 +102,8 @@ TEST(RealLineTest, ConicCaseThreeLinesOfARegulus) {
     const RealLineTest t = test_real_lines(*cone);
     ++checked;
     if (t.has_real_lines) {
-      EXPECT_GT(sgn(plucker_form(t.positive_point)), 0);
-      EXPECT_LT(sgn(plucker_form(t.negative_point)), 0);
+      EXPECT_GT(sgn(plucker_form(t.positive_point.to_gmp())), 0);
+      EXPECT_LT(sgn(plucker_form(t.negative_point.to_gmp())), 0);
     } else {
       EXPECT_FALSE(sampled_real_line_inside(constraints, rng, 20000));
     }
