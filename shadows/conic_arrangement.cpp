@@ -4,10 +4,10 @@
 #undef NDEBUG
 #include "shadows/conic_arrangement.hpp"
 
+#include <CGAL/Arr_batched_point_location.h>
 #include <CGAL/Arr_conic_traits_2.h>
 #include <CGAL/Arr_extended_dcel.h>
 #include <CGAL/Arr_naive_point_location.h>
-#include <CGAL/Arr_walk_along_line_point_location.h>
 #include <CGAL/Arrangement_2.h>
 #include <CGAL/CORE_algebraic_number_traits.h>
 #include <CGAL/Cartesian.h>
@@ -188,6 +188,72 @@ bool in_closed_triangle(const std::array<Exact, 2>& p, const Lens& t) {
   return (o0 >= 0 && o1 >= 0 && o2 >= 0) || (o0 <= 0 && o1 <= 0 && o2 <= 0);
 }
 
+// The face id (Face data) of a point-location result: on an edge or a vertex, a face next to it with an id.
+int face_id(const CGAL::Arr_point_location_result<Arrangement>::Type& obj) {
+  int id = -1;
+  if (const auto* fh = boost::get<Arrangement::Face_const_handle>(&obj)) id = (*fh)->data();
+  else if (const auto* hh = boost::get<Arrangement::Halfedge_const_handle>(&obj)) {
+    id = (*hh)->face()->data();
+    if (id < 0) id = (*hh)->twin()->face()->data();
+  } else if (const auto* vh = boost::get<Arrangement::Vertex_const_handle>(&obj)) {
+    auto h0 = (*vh)->incident_halfedges();
+    auto h = h0;
+    do {
+      id = h->face()->data();
+    } while (id < 0 && ++h != h0);
+  }
+  return id;
+}
+
+// The face of each query: one batched sweep over the edges and all queries (CGAL::locate, O((E + Q) log E)),
+// matched back to the queries by sorting them in the sweep's xy-lexicographic order (each match checked
+// exactly). If the sweep throws (CGAL 5.5's conic traits violate their preconditions on some arrangements,
+// see the header), a match fails or a query lands in a face without an id, that query takes the naive
+// location (every edge, O(E)). No walk along a line: on the arrangements where the sweep throws, CGAL
+// 5.5's walk can go round a cycle of faces for ever with these traits (seen at room 3000: one query of a
+// 45-query receiver walking for minutes; the runs at 5000 and 10^4 never ended, docs/performance.md).
+std::vector<int> locate_queries(const Arrangement& arr, const std::vector<std::array<Exact, 2>>& queries) {
+  std::vector<int> faces(queries.size(), -1);
+  std::vector<char> done(queries.size(), 0);
+  if (!queries.empty()) {
+    std::vector<std::size_t> order(queries.size());
+    for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return queries[a] < queries[b]; });
+    std::vector<Point> pts;
+    pts.reserve(order.size());
+    for (std::size_t k : order) pts.push_back(alg_point(queries[k]));
+    using Result = std::pair<Point, CGAL::Arr_point_location_result<Arrangement>::Type>;
+    std::vector<Result> results;
+    try {
+      CGAL::locate(arr, pts.begin(), pts.end(), std::back_inserter(results));
+    } catch (const CGAL::Failure_exception&) {
+      results.clear();
+    }
+    if (results.size() == pts.size()) {
+      for (std::size_t k = 0; k < results.size(); ++k) {
+        const Point& p = results[k].first;
+        // The sweep hands back copies sharing the query's representation (same address: no CORE
+        // comparison); otherwise (a query on an arrangement vertex) compare exactly.
+        const bool same = (&p.x() == &pts[k].x() && &p.y() == &pts[k].y()) ||
+                          (p.x() == pts[k].x() && p.y() == pts[k].y());
+        if (!same) break;  // not the expected order: the rest take the naive location
+        const int id = face_id(results[k].second);
+        if (id >= 0 || boost::get<Arrangement::Face_const_handle>(&results[k].second) == nullptr) {
+          faces[order[k]] = id;
+          done[order[k]] = 1;
+        }
+      }
+    }
+  }
+  std::optional<CGAL::Arr_naive_point_location<Arrangement>> naive;
+  for (std::size_t k = 0; k < queries.size(); ++k) {
+    if (done[k]) continue;
+    if (!naive) naive.emplace(arr);
+    faces[k] = face_id(naive->locate(alg_point(queries[k])));
+  }
+  return faces;
+}
+
 ReceiverArrangement build(const std::vector<ArrangementCurve>& curves, const std::vector<std::array<Exact, 2>>& queries,
                           bool trim, bool incremental) {
   ReceiverArrangement out;
@@ -317,29 +383,7 @@ ReceiverArrangement build(const std::vector<ArrangementCurve>& curves, const std
     out.faces.push_back(std::move(face));
   }
 
-  CGAL::Arr_walk_along_line_point_location<Arrangement> pl(arr);
-  std::optional<CGAL::Arr_naive_point_location<Arrangement>> naive;
-  for (const auto& q : queries) {
-    auto obj = pl.locate(alg_point(q));
-    if (const auto* fh = boost::get<Arrangement::Face_const_handle>(&obj); fh && (*fh)->data() < 0) {
-      // The walk can end in a wrong face with CGAL 5.5's conic traits: ask the naive location (every edge).
-      if (!naive) naive.emplace(arr);
-      obj = naive->locate(alg_point(q));
-    }
-    int id = -1;
-    if (const auto* fh = boost::get<Arrangement::Face_const_handle>(&obj)) id = (*fh)->data();
-    else if (const auto* hh = boost::get<Arrangement::Halfedge_const_handle>(&obj)) {
-      id = (*hh)->face()->data();
-      if (id < 0) id = (*hh)->twin()->face()->data();
-    } else if (const auto* vh = boost::get<Arrangement::Vertex_const_handle>(&obj)) {
-      auto h0 = (*vh)->incident_halfedges();
-      auto h = h0;
-      do {
-        id = h->face()->data();
-      } while (id < 0 && ++h != h0);
-    }
-    out.query_faces.push_back(id);
-  }
+  out.query_faces = locate_queries(arr, queries);
   return out;
 }
 

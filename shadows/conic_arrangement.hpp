@@ -67,8 +67,9 @@ struct ReceiverArrangement {
 // Input: curves inside the closed unit triangle u, v >= 0, u + v <= 1 (its sides are added), query points
 // (e.g. the triangulation's face samples) inside it. Output: the bounded faces with samples and areas, the
 // face of each query. Exact (areas double). Cost: the sweep, O((n + k) log n) for n curves and k crossings
-// (CORE arithmetic), plus O(F * E) for the samples (each face's vertical probe tests every edge) and a
-// walk point location per query.
+// (CORE arithmetic), plus O(F * E) for the samples (each face's vertical probe tests every edge) and one
+// batched point-location sweep for all queries, O((E + Q) log E) (where CGAL's sweep throws, the naive
+// location, O(E) per query; never the walk along a line, which can fail to end with these traits).
 ReceiverArrangement receiver_arrangement(const std::vector<ArrangementCurve>& curves,
                                          const std::vector<std::array<Exact, 2>>& queries = {});
 

@@ -5,7 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <random>
 
 namespace exactvis::shadows {
 namespace {
@@ -120,6 +122,63 @@ TEST(ConicArrangement, DegenerateConicFallsBackToPolyline) {
     total += f.area_uv;
   }
   EXPECT_NEAR(total, 0.5, 1e-15);
+}
+
+// Many queries in an arrangement of random chords (each from one side of the triangle to another) and three
+// quarter circles about the origin (each from the side v = 0 to the side u = 0): every curve separates the
+// triangle, so a query and the sample of the face it is located in lie on the same side of every chord's
+// line and every circle (exact signs of the curves' polynomials, no code shared with the location). Checks
+// the batched point location and its matching of results back to the queries.
+TEST(ConicArrangement, QueriesLandInFacesOnTheSameSideOfEveryCurve) {
+  std::mt19937_64 rng(20261202);
+  auto rnd = [&](long d) { return Exact(static_cast<long>(rng() % static_cast<unsigned long>(d - 1)) + 1, d); };
+  auto side_point = [&](int side) -> P {
+    const Exact t = rnd(997);
+    if (side == 0) return {t, Exact(0)};       // v = 0
+    if (side == 1) return {Exact(0), t};       // u = 0
+    return {t, 1 - t};                         // u + v = 1
+  };
+  std::vector<ArrangementCurve> curves;
+  std::vector<std::array<P, 2>> chords;
+  for (int k = 0; k < 8; ++k) {
+    const int s0 = static_cast<int>(rng() % 3), s1 = (s0 + 1 + static_cast<int>(rng() % 2)) % 3;
+    ArrangementCurve c;
+    c.points = {side_point(s0), side_point(s1)};
+    chords.push_back({c.points[0], c.points[1]});
+    curves.push_back(c);
+  }
+  const std::vector<Exact> radii{Exact(1, 5), Exact(2, 5), Exact(3, 5)};
+  for (const Exact& r : radii) {
+    ArrangementCurve c;
+    c.points = {{r, Exact(0)}, {r * Exact(4, 5), r * Exact(3, 5)}, {r * Exact(3, 5), r * Exact(4, 5)}, {Exact(0), r}};
+    c.conic = std::array<Exact, 6>{1, 0, 1, 0, 0, -r * r};
+    curves.push_back(c);
+  }
+  auto signs = [&](const P& p) {
+    std::vector<int> out;
+    for (const auto& [a, b] : chords)
+      out.push_back(CGAL::sign((b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0])));
+    for (const Exact& r : radii) out.push_back(CGAL::sign(p[0] * p[0] + p[1] * p[1] - r * r));
+    return out;
+  };
+  std::vector<P> queries;
+  while (queries.size() < 300) {
+    const P q{rnd(1009), rnd(1013)};
+    if (!strictly_in_triangle(q)) continue;
+    const auto sv = signs(q);
+    if (std::find(sv.begin(), sv.end(), 0) != sv.end()) continue;  // on a curve's line: no oracle
+    queries.push_back(q);
+  }
+  const ReceiverArrangement a = receiver_arrangement(curves, queries);
+  ASSERT_FALSE(a.failed) << a.failure;
+  EXPECT_EQ(a.conic_arcs, 3u);
+  ASSERT_EQ(a.query_faces.size(), queries.size());
+  for (std::size_t k = 0; k < queries.size(); ++k) {
+    const int f = a.query_faces[k];
+    ASSERT_GE(f, 0) << "query " << k;
+    ASSERT_LT(f, static_cast<int>(a.faces.size()));
+    EXPECT_EQ(signs(queries[k]), signs(a.faces[f].sample)) << "query " << k << " in face " << f;
+  }
 }
 
 }  // namespace
