@@ -128,4 +128,27 @@ TEST(GeneralOrthographicAspectGraph, FreeEeeArcsAreRefused) {
   EXPECT_NE(r.problem.find("EEE"), std::string::npos);
 }
 
+// Three disjoint tetrahedra, each with one of three pairwise skew edges met by the line x = y = 0 (along x at
+// z = 0, along y at z = 1, along (1, 1, 0) at z = 2), each tetrahedron on one side of the plane of its edge and
+// that line: a closed solid with a free EEE family. Faces (a,b,c), (a,d,b), (b,d,c), (a,c,d) of each.
+Scene skew_tetrahedra() {
+  std::vector<Point3> v{{-1, 0, 0}, {1, 0, 0}, {0, -3, 0}, {0, -1, -1}, {0, -1, 1}, {0, 1, 1}, {3, 0, 1}, {1, 0, 1.5},
+                        {-1, -1, 2}, {1, 1, 2}, {2, -2, 2}, {1, -1, 3}};
+  std::vector<std::array<int, 3>> t;
+  for (int b : {0, 4, 8})
+    for (const auto& f : {std::array<int, 3>{0, 1, 2}, {0, 3, 1}, {1, 3, 2}, {0, 2, 3}})
+      t.push_back({b + f[0], b + f[1], b + f[2]});
+  return make_scene(v, t);
+}
+
+TEST(GeneralOrthographicAspectGraph, ClosedSolidWithAFreeEeeFamilyIsRefused) {
+  const Scene s = skew_tetrahedra();
+  const auto r = general_orthographic_aspect_graph(s);
+  EXPECT_FALSE(r.ok);
+  EXPECT_GT(r.eee_arcs, 0u);
+  const ClosedSolidFronts f = closed_solid_fronts(s);
+  EXPECT_FALSE(f.ok) << "in the class of 10.5";
+  EXPECT_TRUE(f.outside_class) << f.problem;
+}
+
 }  // namespace
