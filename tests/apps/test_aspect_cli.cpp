@@ -183,6 +183,9 @@ TEST(AspectCli, OrthographicNonConvexModels) {
     EXPECT_EQ(g["adjacency"][0][2]["type"], "EV");
   }
   fs::remove(d / "o.json");
+  const auto pv = run_exactvis(d, "aspect " + (d / "three.obj").string() + " --orthographic -q --vtp " + (d / "t.vtp").string());
+  EXPECT_EQ(pv.status, 0) << pv.err;
+  EXPECT_GT(fs::file_size(d / "t.vtp"), 1000u);
   {
     // Three disjoint tetrahedra with pairwise skew edges met by the line x = y = 0: a free EEE family, so the
     // general path refuses the model with one line (docs/theory.md 10.11).
