@@ -44,8 +44,10 @@ struct AspectGraph3 {
   std::vector<AspectAdjacency3> adjacency;  // sorted by (a, b)
   // Cells of the underlying partition per dimension (orthographic: on the sphere), before merging.
   std::array<std::int64_t, 4> cells{0, 0, 0, 0};
-  // Orthographic graphs of non-convex models (aspect/orthographic_aspect_graph) also list every cell of
-  // the partition with its region and an exact direction in it (for tests and pictures); empty otherwise.
+  // Orthographic graphs of non-convex models (aspect/orthographic_aspect_graph,
+  // aspect/general_orthographic_aspect_graph) and plane graphs (aspect/plane_aspect_graph) also list every
+  // cell of the partition with its region and an exact viewpoint in it (for tests and pictures); empty
+  // otherwise. (General graphs: split arcs and their split points share the sign vector of their arc.)
   struct SampledCell {
     int region = 0, dimension = 0;
     Vec3<Exact> direction;

@@ -6,8 +6,10 @@
 #include "kernel/predicates.hpp"
 #include "kernel/quadratic_polynomial.hpp"
 #include "kernel/rational_between.hpp"
+#include "util/for_each_index.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <set>
 #include <utility>
 
@@ -210,8 +212,13 @@ DirectionEventArcs direction_event_arcs(const Scene& scene, const DirectionEvent
 
   // EV: the family lies in the plane of V and E; only triangles with corners strictly on both sides of it
   // meet it in their relative interior.
-  for (int vid = 0; vid < static_cast<int>(scene.vertices.size()); ++vid) {
-    if (adj.vertex_triangles[vid].empty()) continue;
+  // One output list per vertex (per first edge for EEE), filled on oneTBB's threads and concatenated in
+  // order, so the result does not depend on the scheduling.
+  std::vector<std::vector<DirectionEventArc>> ev_out(scene.vertices.size());
+  std::atomic<std::uint64_t> ev_pairs{0}, eee_triples{0}, eee_valid{0};
+  for_each_index(scene.vertices.size(), options.parallel, 1, [&](std::size_t vi) {
+    const int vid = static_cast<int>(vi);
+    if (adj.vertex_triangles[vid].empty()) return;
     const Point3& vp = scene.vertices[vid];
     const V3 vx = ep(vp);
     const VertexFan fan = build_vertex_fan(scene, adj, vid);
@@ -219,7 +226,7 @@ DirectionEventArcs direction_event_arcs(const Scene& scene, const DirectionEvent
       const std::array<int, 2>& e = edge.v;
       const Point3 &ap = scene.vertices[e[0]], &bp = scene.vertices[e[1]];
       if (collinear(vp, ap, bp)) continue;  // V on E's line (an endpoint included): no plane, no family
-      ++out.ev_pairs;
+      ++ev_pairs;
       const V3 a = ep(ap), b = ep(bp);
       std::vector<const Tri*> occ;
       std::vector<Cut> cuts;
@@ -258,15 +265,19 @@ DirectionEventArcs direction_event_arcs(const Scene& scene, const DirectionEvent
         const VertexTangency vt = line_tangent_at_vertex(scene, fan, d, plane_normal);
         return SampleLine{vx, d, {Exact(0), Exact(1)}, {char(!vt.tangent && vt.triangle < 0), char(e_pierced)}};
       };
-      sweep(std::move(cuts), occ, line_at, proto, &out.arcs);
+      sweep(std::move(cuts), occ, line_at, proto, &ev_out[vid]);
     }
-  }
+  });
+  for (auto& v : ev_out)
+    for (auto& a : v) out.arcs.push_back(std::move(a));
+  out.ev_pairs = ev_pairs;
   if (!options.eee) return out;
 
   std::vector<const Tri*> all;
   for (const auto& u : tris) all.push_back(&u);
   const std::size_t ne = adj.edges.size();
-  for (std::size_t i = 0; i < ne; ++i)
+  std::vector<std::vector<DirectionEventArc>> eee_out(ne);
+  for_each_index(ne, options.parallel, 1, [&](std::size_t i) {
     for (std::size_t j = i + 1; j < ne; ++j)
       for (std::size_t k = j + 1; k < ne; ++k) {
         const std::array<std::array<int, 2>, 3> es{adj.edges[i].v, adj.edges[j].v, adj.edges[k].v};
@@ -279,7 +290,7 @@ DirectionEventArcs direction_event_arcs(const Scene& scene, const DirectionEvent
                    Sign::Zero;
           }
         if (skip) continue;
-        ++out.eee_triples;
+        ++eee_triples;
         Family3 f = eee_family(scene, es);
         f.se[0] = &adj.edges[i];
         f.se[1] = &adj.edges[j];
@@ -326,7 +337,7 @@ DirectionEventArcs direction_event_arcs(const Scene& scene, const DirectionEvent
         proto.type = DirectionEventArc::Type::EEE;
         proto.edges = es;
         if (!sweep(cuts, {}, line_at, proto, nullptr)) continue;
-        ++out.eee_valid_triples;
+        ++eee_valid;
         for (const Tri& u : tris) {
           const ArcEnd why = occluder_end(u.id);
           for (int e = 0; e < 3; ++e) {  // the line meets u's edge line e: a quadratic in t
@@ -345,8 +356,13 @@ DirectionEventArcs direction_event_arcs(const Scene& scene, const DirectionEvent
             add_roots(cuts, dot(pt - constant(w), constant(cross(f.u[other], f.a[other] - w))), why);
           }
         }
-        sweep(std::move(cuts), all, line_at, proto, &out.arcs);
+        sweep(std::move(cuts), all, line_at, proto, &eee_out[i]);
       }
+  });
+  for (auto& v : eee_out)
+    for (auto& a : v) out.arcs.push_back(std::move(a));
+  out.eee_triples = eee_triples;
+  out.eee_valid_triples = eee_valid;
   return out;
 }
 

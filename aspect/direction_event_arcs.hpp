@@ -55,7 +55,8 @@ struct DirectionEventArc {
 };
 
 struct DirectionEventOptions {
-  bool eee = true;  // also the EEE families (O(edges^3) triples)
+  bool eee = true;       // also the EEE families (O(edges^3) triples)
+  bool parallel = true;  // oneTBB over vertices (EV) and first edges (EEE); the result is the same either way
 };
 
 struct DirectionEventArcs {

@@ -216,8 +216,12 @@ GeneralOrthographicResult general_orthographic_aspect_graph(const Scene& scene, 
       if (cells[c].dimension > cells[best].dimension) best = c;
     g.regions.push_back({regions.dimension[r], aspect[best], cells[best].sample});
   }
-  // Events of an adjacency: the free EV arcs holding the lower cell (its aspect differs from the upper
-  // cell's only there), each with the triangles whose visibility differs between the two regions.
+  // Events of an adjacency: per circle holding the lower cell, one free EV arc through it (its aspect differs
+  // from the upper cell's only on free arcs), preferring a generator on a triangle whose visibility differs,
+  // each with the triangles whose visibility differs between the two regions. (Many coplanar families share a
+  // circle, e.g. a face plane of several bodies: one name per circle keeps the JSON small.)
+  std::map<std::int64_t, int> index_of_id;
+  for (std::size_t i = 0; i < scene.triangles.size(); ++i) index_of_id[scene.triangles[i].id] = static_cast<int>(i);
   for (const auto& adj : regions.adjacency) {
     AspectAdjacency3 a;
     a.a = adj.a;
@@ -226,18 +230,28 @@ GeneralOrthographicResult general_orthographic_aspect_graph(const Scene& scene, 
     const auto& ua = aspect[adj.upper];
     std::vector<std::int64_t> diff;
     std::set_symmetric_difference(la.begin(), la.end(), ua.begin(), ua.end(), std::back_inserter(diff));
-    std::set<std::pair<int, std::array<int, 2>>> seen;
-    for (int k : cells[adj.lower].circles)
-      if (k < static_cast<int>(arcs_on.size()))
-        for (const EvArc& e : arcs_on[k]) {
-          const auto& arc = events.arcs[e.index];
-          if (!on_arc(e, cells[adj.lower].sample) || !seen.insert({arc.vertex, arc.edges[0]}).second) continue;
-          AspectEvent3 ev;
-          ev.vertex = arc.vertex;
-          ev.edge = arc.edges[0];
-          ev.triangles = diff;
-          a.events.push_back(std::move(ev));
-        }
+    std::set<int> diff_vertices;
+    for (std::int64_t id : diff)
+      for (int v : scene.triangles[index_of_id[id]].v) diff_vertices.insert(v);
+    for (int k : cells[adj.lower].circles) {
+      if (k >= static_cast<int>(arcs_on.size())) continue;
+      const DirectionEventArc* pick = nullptr;
+      for (const EvArc& e : arcs_on[k]) {
+        const auto& arc = events.arcs[e.index];
+        if (!on_arc(e, cells[adj.lower].sample)) continue;
+        const bool on_diff = diff_vertices.count(arc.vertex) && diff_vertices.count(arc.edges[0][0]) &&
+                             diff_vertices.count(arc.edges[0][1]);
+        if (!pick || (on_diff && !(diff_vertices.count(pick->vertex) && diff_vertices.count(pick->edges[0][0]) &&
+                                   diff_vertices.count(pick->edges[0][1]))))
+          pick = &arc;
+      }
+      if (!pick) continue;
+      AspectEvent3 ev;
+      ev.vertex = pick->vertex;
+      ev.edge = pick->edges[0];
+      ev.triangles = diff;
+      a.events.push_back(std::move(ev));
+    }
     g.adjacency.push_back(std::move(a));
   }
   if (progress) progress(1);

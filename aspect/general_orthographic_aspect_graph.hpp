@@ -28,9 +28,9 @@ struct GeneralOrthographicResult {
 };
 
 // Input: a model whose triangles meet only in shared corners and edges. Output: the orthographic aspect graph
-// (regions with exact samples, adjacency with the EV events of the free arcs holding the lower cell, every cell
-// with its sample and sign vector in `sampled_cells` when `with_cells`), or ok = false when a free EEE arc
-// exists. Cost: the free arcs (aspect/direction_event_arcs: O(v e n log n) EV, O(e^3 n^2) EEE), the O(m^2) cells
+// (regions with exact samples; adjacency with one EV event per circle holding the lower cell, a free arc
+// through it; every cell with its sample and sign vector in `sampled_cells` when `with_cells`), or ok = false
+// when a free EEE arc exists. Cost: the free arcs (aspect/direction_event_arcs: O(v e n log n) EV, O(e^3 n^2) EEE), the O(m^2) cells
 // of m circles, and one exact per-direction aspect (O(n) Boolean operations on O(n) polygons) per face and
 // per cell on a free arc, on all cores. `progress` (optional) receives the fraction done.
 GeneralOrthographicResult general_orthographic_aspect_graph(const Scene& scene, void (*progress)(double) = nullptr,

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <array>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -182,6 +183,26 @@ TEST(AspectCli, OrthographicNonConvexModels) {
     EXPECT_EQ(g["adjacency"][0][2]["type"], "EV");
   }
   fs::remove(d / "o.json");
+  const auto pv = run_exactvis(d, "aspect " + (d / "three.obj").string() + " --orthographic -q --vtp " + (d / "t.vtp").string());
+  EXPECT_EQ(pv.status, 0) << pv.err;
+  EXPECT_GT(fs::file_size(d / "t.vtp"), 1000u);
+  {
+    // Three disjoint tetrahedra with pairwise skew edges met by the line x = y = 0: a free EEE family, so the
+    // general path refuses the model with one line (docs/theory.md 10.11).
+    std::ofstream out(d / "skew.obj");
+    const double v[12][3] = {{-1, 0, 0}, {1, 0, 0}, {0, -3, 0}, {0, -1, -1}, {0, -1, 1}, {0, 1, 1},
+                             {3, 0, 1},  {1, 0, 1.5}, {-1, -1, 2}, {1, 1, 2}, {2, -2, 2}, {1, -1, 3}};
+    for (const auto& p : v) out << "v " << p[0] << " " << p[1] << " " << p[2] << "\n";
+    for (int b : {1, 5, 9})
+      for (const auto& f : {std::array<int, 3>{0, 1, 2}, {0, 3, 1}, {1, 3, 2}, {0, 2, 3}})
+        out << "f " << b + f[0] << " " << b + f[1] << " " << b + f[2] << "\n";
+  }
+  const auto k = run_exactvis(d, "aspect " + (d / "skew.obj").string() + " --orthographic -q -o " + (d / "o.json").string());
+  EXPECT_EQ(k.status, 1);
+  EXPECT_NE(k.err.find("skew.obj: "), std::string::npos) << k.err;
+  EXPECT_NE(k.err.find("free EEE event arcs"), std::string::npos) << k.err;
+  EXPECT_EQ(std::count(k.err.begin(), k.err.end(), '\n'), 1);
+  EXPECT_FALSE(fs::exists(d / "o.json"));
   // The same one-line error for a plane of viewpoints (the class of 10.5 is required there too).
   const auto p = run_exactvis(d, "aspect " + (d / "three.obj").string() + " --plane z=1/2 -o " + (d / "o.json").string());
   EXPECT_EQ(p.status, 1);

@@ -296,3 +296,23 @@ TEST(DirectionEventArcs, EeeArcsOfSmallModelsAreSoundAndComplete) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(DirectionEventArcs, ParallelRunEqualsTheSequentialOne) {
+  const Scene s = exactvis::aspect_test::l_prism();
+  exactvis::DirectionEventOptions seq, par;
+  seq.parallel = false;
+  const auto a = exactvis::direction_event_arcs(s, seq), b = exactvis::direction_event_arcs(s, par);
+  ASSERT_EQ(a.arcs.size(), b.arcs.size());
+  EXPECT_EQ(a.ev_pairs, b.ev_pairs);
+  EXPECT_EQ(a.eee_valid_triples, b.eee_valid_triples);
+  for (std::size_t i = 0; i < a.arcs.size(); ++i) {
+    EXPECT_EQ(key_of(a.arcs[i]), key_of(b.arcs[i]));
+    EXPECT_EQ(a.arcs[i].orientation, b.arcs[i].orientation);
+    EXPECT_TRUE(a.arcs[i].t0 == b.arcs[i].t0 && a.arcs[i].t1 == b.arcs[i].t1);
+    EXPECT_EQ(a.arcs[i].sample_t, b.arcs[i].sample_t);
+  }
+}
+
+}  // namespace
