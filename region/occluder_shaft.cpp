@@ -108,16 +108,103 @@ struct ShaftPlane {
   }
 };
 
+// A polygon being clipped, with the line each edge lies on: edge_line[i] = k (0..2) when the edge
+// points[i] -> points[i + 1] lies on the triangle's edge k (corner k -> corner k + 1), in that direction; -1
+// when it lies on a clipping plane (or tracking was given up). The points are exactly clip_polygon's.
+struct TrackedPolygon {
+  Polygon3 points;
+  std::vector<int> edge_line;
+};
+
+// clip_polygon (region/convex_polygon_3) with the edges' lines tracked: the same loop, the same crossing
+// points and the same removal of repeated vertices. An output edge from a kept vertex i or the crossing on
+// input edge i to the kept vertex i + 1 or the crossing on input edge i lies on input edge i, in its
+// direction; any other output edge joins two points of the plane. When repeated vertices were removed the
+// tracking is given up (every edge -1: the caller then takes the rational line, as before).
+TrackedPolygon clip_tracked(const TrackedPolygon& in, const Plane3& plane) {
+  TrackedPolygon out;
+  const Polygon3& poly = in.points;
+  const std::size_t n = poly.size();
+  if (n == 0) return out;
+  struct Tag {
+    bool kept;      // kept input vertex `i`, else the crossing point on input edge `i`
+    std::size_t i;
+  };
+  std::vector<Exact> v(n);
+  for (std::size_t i = 0; i < n; ++i) v[i] = plane.value(poly[i]);
+  Polygon3 pts;
+  std::vector<Tag> tags;
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t j = (i + 1) % n;
+    const int si = CGAL::sign(v[i]), sj = CGAL::sign(v[j]);
+    if (si >= 0) {
+      pts.push_back(poly[i]);
+      tags.push_back({true, i});
+    }
+    if ((si > 0 && sj < 0) || (si < 0 && sj > 0)) {
+      const Exact t = v[i] / (v[i] - v[j]);
+      pts.push_back(poly[i] + t * (poly[j] - poly[i]));
+      tags.push_back({false, i});
+    }
+  }
+  bool merged = false;
+  std::vector<Tag> clean_tags;
+  for (std::size_t k = 0; k < pts.size(); ++k) {
+    if (out.points.empty() || !(out.points.back() == pts[k])) {
+      out.points.push_back(pts[k]);
+      clean_tags.push_back(tags[k]);
+    } else {
+      merged = true;
+    }
+  }
+  while (out.points.size() > 1 && out.points.front() == out.points.back()) {
+    out.points.pop_back();
+    clean_tags.pop_back();
+    merged = true;
+  }
+  const std::size_t m = out.points.size();
+  out.edge_line.assign(m, -1);
+  if (merged) return out;
+  for (std::size_t e = 0; e < m; ++e) {
+    const Tag& a = clean_tags[e];
+    const Tag& b = clean_tags[(e + 1) % m];
+    const bool along = a.kept ? (b.kept ? b.i == (a.i + 1) % n : b.i == a.i) : (b.kept && b.i == (a.i + 1) % n);
+    if (along) out.edge_line[e] = in.edge_line[a.i];
+  }
+  return out;
+}
+
 // The triangle clipped to the wedge between the pair's planes, with its edge functionals; std::nullopt when
-// the clipped part has no area off both planes (docs/theory.md §5.2).
-std::optional<ShaftOccluder> clipped_occluder(const std::array<RationalPoint3, 3>& tri, const StabbingPair& pair) {
-  Polygon3 clipped = clip_polygon({tri[0], tri[1], tri[2]}, pair.source_plane);
-  clipped = clip_polygon(clipped, pair.target_plane);
-  if (is_degenerate(clipped)) return std::nullopt;
-  if (lies_in_plane(clipped, pair.source_plane) || lies_in_plane(clipped, pair.target_plane)) return std::nullopt;
+// the clipped part has no area off both planes (docs/theory.md §5.2). An edge of the clipped polygon that
+// lies on one of the triangle's edges, in its direction, has that edge's functional (the primitive integer
+// vector of a directed line does not depend on the two points chosen on it): from the double corners in the
+// fixed layer when `corners` is given and it fits, else from the rational corners. Only the edges on the
+// polygon planes need the rational clipped points.
+std::optional<ShaftOccluder> clipped_occluder(const std::array<RationalPoint3, 3>& tri, const StabbingPair& pair,
+                                              const std::array<Point3, 3>* corners) {
+  TrackedPolygon clipped{{tri[0], tri[1], tri[2]}, {0, 1, 2}};
+  clipped = clip_tracked(clipped, pair.source_plane);
+  clipped = clip_tracked(clipped, pair.target_plane);
+  const Polygon3& poly = clipped.points;
+  if (is_degenerate(poly)) return std::nullopt;
+  if (lies_in_plane(poly, pair.source_plane) || lies_in_plane(poly, pair.target_plane)) return std::nullopt;
+  std::array<std::optional<ConeVector6>, 3> triangle_edge;
+  auto edge_functional = [&](int k) -> const ConeVector6& {
+    auto& f = triangle_edge[static_cast<std::size_t>(k)];
+    if (!f) {
+      ConeVector6 e;
+      const std::size_t a = static_cast<std::size_t>(k), b = static_cast<std::size_t>((k + 1) % 3);
+      if (corners && side_functional_of_doubles((*corners)[a], (*corners)[b], e)) f = std::move(e);
+      else f = ConeVector6(side_functional(line_through(tri[a], tri[b])));
+    }
+    return *f;
+  };
   ShaftOccluder occ;
-  for (std::size_t i = 0; i < clipped.size(); ++i)
-    occ.edges.emplace_back(side_functional(line_through(clipped[i], clipped[(i + 1) % clipped.size()])));
+  for (std::size_t i = 0; i < poly.size(); ++i) {
+    const int k = clipped.edge_line[i];
+    if (k >= 0) occ.edges.push_back(edge_functional(k));
+    else occ.edges.emplace_back(side_functional(line_through(poly[i], poly[(i + 1) % poly.size()])));
+  }
   return occ;
 }
 
@@ -161,7 +248,7 @@ std::vector<ShaftOccluder> shaft_occluders(const Scene& scene, const std::vector
     bool inside_wedge = true;
     for (std::size_t k = 0; k < 2 && inside_wedge; ++k)
       for (std::size_t i = 0; i < 3 && inside_wedge; ++i) inside_wedge = planes[k].side(c[i]) == Sign::Positive;
-    auto occ = inside_wedge ? unclipped_occluder(c) : clipped_occluder(triangle_points(scene, idx), pair);
+    auto occ = inside_wedge ? unclipped_occluder(c) : clipped_occluder(triangle_points(scene, idx), pair, &c);
     if (occ) {
       occ->triangle = idx;
       occ->corners_d = c;
@@ -185,7 +272,7 @@ std::vector<ShaftOccluder> shaft_occluders(const std::vector<std::array<Rational
         break;
       }
     if (culled) continue;
-    if (auto occ = clipped_occluder(tri, pair)) {
+    if (auto occ = clipped_occluder(tri, pair, nullptr)) {
       occ->triangle = static_cast<std::int64_t>(idx);
       for (int k = 0; k < 3; ++k)
         occ->corners_d[static_cast<std::size_t>(k)] = {CGAL::to_double(tri[static_cast<std::size_t>(k)].x),
