@@ -65,8 +65,14 @@ struct RayInput {
   const Vec3<Exact>& d;
   std::array<std::pair<double, double>, 3> oi, di;
   mutable std::optional<HomogeneousVector> ho, hd;
+  // The origin as doubles when it is exactly representable (rays from scene vertices): then signs that
+  // depend only on the origin and the scene's doubles go through the kernel's double predicates.
+  std::optional<Point3> o_double;
   RayInput(const Vec3<Exact>& origin, const Vec3<Exact>& dir) : o(origin), d(dir) {
     for (int k = 0; k < 3; ++k) oi[k] = enclosing_interval(o[k]), di[k] = enclosing_interval(d[k]);
+    // A one-point enclosure [x, x] of a rational means it equals the double x.
+    if (oi[0].first == oi[0].second && oi[1].first == oi[1].second && oi[2].first == oi[2].second)
+      o_double = Point3{oi[0].first, oi[1].first, oi[2].first};
   }
   // p - origin (layers 1 and 2), or w_o (p - origin) (layer 3).
   template <class NT>
@@ -116,6 +122,10 @@ Sign plane_dir_sign(const RayInput& r, const Scene& scene, const SceneTriangle& 
 // sign(n . (t0 - o)): the side of t's plane the origin lies on (negated); the hit parameter is
 // s = n . (t0 - o) / n . d.
 Sign plane_offset_sign(const RayInput& r, const Scene& scene, const SceneTriangle& t) {
+  // n . (t0 - o) = det[t1 - t0, t2 - t0, t0 - o] = -orient3d(t0, t1, t2, o): for a double origin the kernel's
+  // orient3d (semi-static filter, then Mpzf) decides it, cheaply also when it is zero (o on t's plane, as for
+  // every triangle at the vertex a ray starts from).
+  if (r.o_double) return -orient3d(scene.corner(t, 0), scene.corner(t, 1), scene.corner(t, 2), *r.o_double);
   static PredicateCounter counter("ray_plane_offset");
   return filtered_sign<ExactFloat>(counter, [&](auto nt) {
     using NT = typename decltype(nt)::type;
