@@ -120,7 +120,9 @@ bool ray_through_meets(const P2<NT>& e, const WallRectangle& wall, const std::ve
   if (!ordered(a, b) && !ordered(b, a)) return false;
   const NT fe = cross(a, b, e);
   for (const auto& x : views) {
-    const NT fx = cross(a, b, x);  // the meeting point is x + t (e - x) with t = fx / (fx - fe) > 0
+    // The meeting point is x + t (e - x) with t = fx / (fx - fe) > 0. For a chain of two walls this ray-side
+    // rule is implied (docs/theory.md §5.10 (3)); longer chains have no such proof, so it is always checked.
+    const NT fx = cross(a, b, x);
     if (sgn(fx) == 0 || sgn(fx) * sgn(NT(fx - fe)) <= 0) return false;
   }
   return true;

@@ -312,9 +312,9 @@ TEST(WallUmbra, AViewOverlapBehindTheViewerIsNoLink) {
   EXPECT_FALSE(wall_pair_hides_exactly(A, B, cell, t)) << "no contact";
   EXPECT_FALSE(wall_chain_hides_exactly({A, B}, {{0, 1}}, cell, t)) << "a link through a ray behind the cell";
   EXPECT_FALSE(walls_views_may_overlap(A, B, Box3{{0, 0, 0}, {1, 1, 1}}, t)) << "the double proposal applies the same rule";
-  // Without the rule this proof would be accepted; here it would still be right (every attacking segment
-  // meets a wall): the case analysis of §5.10 shows a one-sided t < 0 link forces the walls' lines to cross
-  // on a footprint, as here at (2.41, 1.5) on A. The rule is kept because the chain proof uses it.
+  // Without the rule this proof would be accepted, and rightly (every attacking segment meets a wall): for
+  // two walls theory §5.10 (3) proves the rule implied (here the lines cross at (2.41, 1.5), on A); it is
+  // kept for every chain because longer chains have no such proof. This test pins the rule down.
   std::mt19937_64 rng(13);
   for (int s = 0; s < 300; ++s) {
     const auto p = random_cell_point(cell, rng), q = random_target_point(t, rng);
