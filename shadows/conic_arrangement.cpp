@@ -297,7 +297,10 @@ ReceiverArrangement build(const std::vector<ArrangementCurve>& curves, const std
   }
   Arrangement arr;
   if (incremental) {
-    for (const auto& cv : input) CGAL::insert(arr, cv);  // zone walks instead of one sweep
+    // Zone walks instead of one sweep, each curve's first point found by the naive location: CGAL's default
+    // (the walk along a line) was seen not returning on these arrangements at room 10^4 (see locate_queries).
+    const CGAL::Arr_naive_point_location<Arrangement> naive(arr);
+    for (const auto& cv : input) CGAL::insert(arr, cv, naive);
   } else {
     CGAL::insert(arr, input.begin(), input.end());
   }
