@@ -26,22 +26,6 @@
 
 using namespace exactvis;
 
-namespace {
-
-struct Timing {
-  double wall = 0, cpu = 0;
-};
-
-template <class F>
-Timing timed(F&& f) {
-  const double w0 = bench::now();
-  const std::clock_t c0 = std::clock();
-  f();
-  return {bench::now() - w0, static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC};
-}
-
-}  // namespace
-
 int main(int argc, char** argv) {
   std::vector<std::string> kinds{"town", "forest"}, sizes{"1000", "10000"}, threads{"1", "2"},
       methods{"pvs-flat", "pvs-box", "pvs-novirt", "pvs"};
@@ -75,7 +59,8 @@ int main(int argc, char** argv) {
           region::CellVisibilityOptions co;
           co.threads = t;
           region::CellVisibility cv;
-          const Timing tm = timed([&] { cv = region::visibility_from_source(scene, context.index(), {cell, {}}, all, co); });
+          const bench::Timing tm =
+              bench::timed([&] { cv = region::visibility_from_source(scene, context.index(), {cell, {}}, all, co); });
           baseline_cpu = tm.cpu;
           std::printf("%-7s %8.0f %3d %-14s %8.2f %8.2f %8lld %10.1f %8s %8s %8s %8s %8.0f %8s\n", kind.c_str(), n, t,
                       "per-triangle", tm.wall, tm.cpu, static_cast<long long>(cv.visible), n / tm.cpu, "-", "-", "-", "-",
@@ -89,7 +74,7 @@ int main(int argc, char** argv) {
           po.occluder_proofs = method == "pvs" || method == "pvs-novirt";
           po.virtual_occluders = method == "pvs" ? cap : 0;
           region::CellPvs pvs;
-          const Timing tm = timed([&] { pvs = region::exact_cell_pvs(context, cell, po); });
+          const bench::Timing tm = bench::timed([&] { pvs = region::exact_cell_pvs(context, cell, po); });
           char ratio[32] = "-";
           if (baseline_cpu > 0) std::snprintf(ratio, sizeof ratio, "%.2f", baseline_cpu / tm.cpu);
           std::printf("%-7s %8.0f %3d %-14s %8.2f %8.2f %8lld %10.1f %8lld %8lld %8lld %8lld %8lld %8s\n", kind.c_str(),

@@ -29,18 +29,6 @@ using namespace exactvis;
 
 namespace {
 
-struct Timing {
-  double wall = 0, cpu = 0;
-};
-
-template <class F>
-Timing timed(F&& f) {
-  const double w0 = bench::now();
-  const std::clock_t c0 = std::clock();
-  f();
-  return {bench::now() - w0, static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC};
-}
-
 std::vector<char> membership(std::size_t n, const region::CellPvs& pvs) {
   std::vector<char> in(n, 0);
   for (const auto& v : pvs.visible) in[static_cast<std::size_t>(v.index)] = 1;
@@ -79,7 +67,7 @@ int main(int argc, char** argv) {
       region::PvsOptions po;
       po.threads = threads;
       const bool with_exact = static_cast<long>(n) <= exact_max;
-      auto row = [&](const char* method, const Timing& tm, std::int64_t pvs, const std::string& vs, std::int64_t r,
+      auto row = [&](const char* method, const bench::Timing& tm, std::int64_t pvs, const std::string& vs, std::int64_t r,
                      const std::string& errors) {
         std::printf("%-7s %8zu %-13s %9.3f %9.3f %7lld %9s %10lld %9s\n", kind.c_str(), n, method, tm.wall, tm.cpu,
                     static_cast<long long>(pvs), vs.c_str(), static_cast<long long>(r), errors.c_str());
@@ -88,14 +76,14 @@ int main(int argc, char** argv) {
       (void)context.extruded();  // detection and solids outside the timings (built once per scene)
       (void)context.solids();
       region::CellPvs exact, cons;
-      Timing t_exact;
+      bench::Timing t_exact;
       if (with_exact) {
-        t_exact = timed([&] { exact = region::exact_cell_pvs(context, cell, po); });
+        t_exact = bench::timed([&] { exact = region::exact_cell_pvs(context, cell, po); });
         row("exact", t_exact, exact.stats.visible, "1.00", 0, "-");
       }
       const bool with_cons = conservative_max < 0 || static_cast<long>(n) <= conservative_max;
-      Timing t_cons;
-      if (with_cons) t_cons = timed([&] { cons = region::conservative_cell_pvs(context, cell, po); });
+      bench::Timing t_cons;
+      if (with_cons) t_cons = bench::timed([&] { cons = region::conservative_cell_pvs(context, cell, po); });
       std::string vs = "-", errors = "-";
       if (with_cons && with_exact) {
         const auto in = membership(n, cons);
@@ -109,7 +97,8 @@ int main(int argc, char** argv) {
       if (with_cons) row("conservative", t_cons, cons.stats.visible, vs, 0, errors);
       if (with_cons && static_cast<long>(n) <= scan_max) {
         region::CellPvs scan;
-        const Timing t_scan = timed([&] { scan = region::conservative_cell_pvs(context, cell, po, region::OccluderSearch::scan); });
+        const bench::Timing t_scan = bench::timed(
+            [&] { scan = region::conservative_cell_pvs(context, cell, po, region::OccluderSearch::scan); });
         bool same = scan.visible.size() == cons.visible.size();
         for (std::size_t i = 0; same && i < scan.visible.size(); ++i) same = scan.visible[i].index == cons.visible[i].index;
         char buf[48];
@@ -121,12 +110,12 @@ int main(int argc, char** argv) {
       region::PvsOptions so = po;
       so.cell_rays = 100000;
       region::CellPvs sampled;
-      const Timing t_cal = timed([&] { sampled = region::sampled_cell_pvs(context, cell, so); });
+      const bench::Timing t_cal = bench::timed([&] { sampled = region::sampled_cell_pvs(context, cell, so); });
       std::int64_t r = rays;
       // By CPU seconds, not wall: the machine may be shared, and CPU time is what equal cost means.
       if (with_exact) r = std::clamp<std::int64_t>(static_cast<std::int64_t>(100000 * t_exact.cpu / std::max(1e-3, t_cal.cpu)), 100000, 200000000);
       so.cell_rays = r;
-      const Timing t_s = timed([&] { sampled = region::sampled_cell_pvs(context, cell, so); });
+      const bench::Timing t_s = bench::timed([&] { sampled = region::sampled_cell_pvs(context, cell, so); });
       vs = "-", errors = "-";
       if (with_exact) {
         char buf[32];

@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <ctime>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -12,6 +13,20 @@ namespace exactvis::bench {
 // Seconds on a steady clock (differences only).
 inline double now() {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+// Wall-clock and process CPU seconds of one call (the machine may be shared: CPU seconds are the fairer
+// figure; the process clock counts every thread of the call).
+struct Timing {
+  double wall = 0, cpu = 0;
+};
+
+template <class F>
+Timing timed(F&& f) {
+  const double w0 = now();
+  const std::clock_t c0 = std::clock();
+  f();
+  return {now() - w0, static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC};
 }
 
 // "a,b,c" -> {"a", "b", "c"}; empty items are dropped.
