@@ -207,6 +207,17 @@ std::optional<EvEvent> ev_event(const Scene& scene, const SceneAdjacency& adj, c
   return ev;
 }
 
+EvResult join_per_vertex_ev(std::vector<std::vector<EvEvent>>&& per_vertex, const std::vector<EvStats>& stats) {
+  EvResult result;
+  for (std::size_t v = 0; v < per_vertex.size(); ++v) {
+    for (auto& ev : per_vertex[v]) result.events.push_back(std::move(ev));
+    result.stats.pairs += stats[v].pairs;
+    result.stats.tangent_pairs += stats[v].tangent_pairs;
+    result.stats.occluder_tests += stats[v].occluder_tests;
+  }
+  return result;
+}
+
 EvResult enumerate_ev_events(const Scene& scene, const EvOptions& options) {
   const SceneAdjacency adj = build_scene_adjacency(scene);
   const TriangleIndex index(scene);
@@ -244,13 +255,7 @@ EvResult enumerate_ev_events(const Scene& scene, const EvOptions& options) {
     bar.advance();
   };
   for_each_index(static_cast<std::size_t>(nv), options.parallel, 1, [&](std::size_t v) { work(static_cast<int>(v)); });
-  EvResult result;
-  for (int v = 0; v < nv; ++v) {
-    for (auto& ev : per_vertex[v]) result.events.push_back(std::move(ev));
-    result.stats.pairs += per_vertex_stats[v].pairs;
-    result.stats.tangent_pairs += per_vertex_stats[v].tangent_pairs;
-    result.stats.occluder_tests += per_vertex_stats[v].occluder_tests;
-  }
+  EvResult result = join_per_vertex_ev(std::move(per_vertex), per_vertex_stats);
   if (options.segment_ends && !result.events.empty()) {
     const TriangleIndex& spatial = index;
     const Box3 box = bounding_box(scene);

@@ -58,6 +58,11 @@ struct EvResult {
   EvStats stats;
 };
 
+// The per-vertex outputs of a parallel EV enumeration joined in vertex order (so the result does not depend on
+// the thread count): events moved out of `per_vertex[v]` for v = 0, 1, ..., stats summed. Both vectors have one
+// entry per vertex. Cost: linear in the events.
+EvResult join_per_vertex_ev(std::vector<std::vector<EvEvent>>&& per_vertex, const std::vector<EvStats>& stats);
+
 // All EV events of `scene` (see the header comment), exact.
 EvResult enumerate_ev_events(const Scene& scene, const EvOptions& options = {});
 

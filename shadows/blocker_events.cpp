@@ -167,14 +167,7 @@ EvResult blocker_ev_events(const Scene& scene, const std::vector<int>& light, co
     bar.advance();
   };
   for_each_index(static_cast<std::size_t>(nv), options.parallel, 1, [&](std::size_t v) { work(static_cast<int>(v)); });
-  EvResult result;
-  for (int v = 0; v < nv; ++v) {
-    for (auto& ev : per_vertex[v]) result.events.push_back(std::move(ev));
-    result.stats.pairs += per_vertex_stats[v].pairs;
-    result.stats.tangent_pairs += per_vertex_stats[v].tangent_pairs;
-    result.stats.occluder_tests += per_vertex_stats[v].occluder_tests;
-  }
-  return result;
+  return join_per_vertex_ev(std::move(per_vertex), per_vertex_stats);
 }
 
 }  // namespace exactvis::shadows
