@@ -94,25 +94,29 @@ Scene polytope_pair(int points, std::uint64_t seed) {
   return a;
 }
 
-void pair_table(const std::vector<std::string>& sizes, std::uint64_t seed, int repeat) {
-  std::printf("non-convex: two convex polytopes side by side, orthographic (growth = d log time / d log n)\n"
-              "%8s %9s %8s %9s %9s %10s %10s %10s %10s %8s %8s\n",
-              "points", "triangles", "circles", "cells", "regions", "adjacency", "cpu_s", "wall_s", "us/cell", "ratio",
-              "growth");
+// Pairs of `sizes` points each: the graph `build(pair, fronts)` (timed with closed_solid_fronts, median CPU and
+// wall seconds) and its curves `count(pair, fronts)` (great circles or trace lines, not timed), cells, regions,
+// adjacency, growth against n.
+template <class Build, class Count>
+void polytope_pair_table(const char* title, const char* curve_column, const std::vector<std::string>& sizes,
+                         std::uint64_t seed, int repeat, Build&& build, Count&& count) {
+  std::printf("%s (growth = d log time / d log n)\n%8s %9s %8s %9s %9s %10s %10s %10s %10s %8s %8s\n", title,
+              "points", "triangles", curve_column, "cells", "regions", "adjacency", "cpu_s", "wall_s", "us/cell",
+              "ratio", "growth");
   double first = 0, prev = 0;
   std::size_t prev_n = 0;
   for (std::size_t i = 0; i < sizes.size(); ++i) {
     const Scene s = polytope_pair(std::atoi(sizes[i].c_str()), seed);
     std::vector<double> times, walls;
-    std::size_t circles = 0, cells = 0, regions = 0, adjacency = 0;
+    std::size_t curves = 0, cells = 0, regions = 0, adjacency = 0;
     for (int k = 0; k < repeat; ++k) {
       const double t0 = cpu_now(), w0 = bench::now();
       const ClosedSolidFronts f = closed_solid_fronts(s);
       if (!f.ok) return (void)std::printf("rejected: %s\n", f.problem.c_str());
-      const AspectGraph3 g = orthographic_aspect_graph(s, f, nullptr, /*with_cells=*/false);
+      const AspectGraph3 g = build(s, f);
       times.push_back(cpu_now() - t0);
       walls.push_back(bench::now() - w0);
-      circles = orthographic_aspect_circles(s, f);
+      curves = count(s, f);
       cells = g.cells[0] + g.cells[1] + g.cells[2];
       regions = g.regions.size();
       adjacency = g.adjacency.size();
@@ -123,7 +127,7 @@ void pair_table(const std::vector<std::string>& sizes, std::uint64_t seed, int r
     if (i == 0) first = t;
     const std::size_t n = s.triangles.size();
     const double growth = i == 0 ? 0 : std::log(t / prev) / std::log(double(n) / prev_n);
-    std::printf("%8s %9zu %8zu %9zu %9zu %10zu %10.4f %10.4f %10.2f %8.1f %8.2f\n", sizes[i].c_str(), n, circles,
+    std::printf("%8s %9zu %8zu %9zu %9zu %10zu %10.4f %10.4f %10.2f %8.1f %8.2f\n", sizes[i].c_str(), n, curves,
                 cells, regions, adjacency, t, w, 1e6 * t / cells, t / first, growth);
     std::fflush(stdout);
     prev = t;
@@ -131,43 +135,24 @@ void pair_table(const std::vector<std::string>& sizes, std::uint64_t seed, int r
   }
 }
 
+void pair_table(const std::vector<std::string>& sizes, std::uint64_t seed, int repeat) {
+  polytope_pair_table(
+      "non-convex: two convex polytopes side by side, orthographic", "circles", sizes, seed, repeat,
+      [](const Scene& s, const ClosedSolidFronts& f) {
+        return orthographic_aspect_graph(s, f, nullptr, /*with_cells=*/false);
+      },
+      [](const Scene& s, const ClosedSolidFronts& f) { return orthographic_aspect_circles(s, f); });
+}
+
 // The pairs on the plane z = 2^17 (through both bodies: the second is raised by 2^20 / 5).
 void plane_pair_table(const std::vector<std::string>& sizes, std::uint64_t seed, int repeat) {
-  std::printf("non-convex: two convex polytopes side by side, on the plane z = 131072 (growth = d log time / d log n)\n"
-              "%8s %9s %8s %9s %9s %10s %10s %10s %10s %8s %8s\n",
-              "points", "triangles", "lines", "cells", "regions", "adjacency", "cpu_s", "wall_s", "us/cell", "ratio",
-              "growth");
-  double first = 0, prev = 0;
-  std::size_t prev_n = 0;
   const Exact h(1 << 17);
-  for (std::size_t i = 0; i < sizes.size(); ++i) {
-    const Scene s = polytope_pair(std::atoi(sizes[i].c_str()), seed);
-    std::vector<double> times, walls;
-    std::size_t lines = 0, cells = 0, regions = 0, adjacency = 0;
-    for (int k = 0; k < repeat; ++k) {
-      const double t0 = cpu_now(), w0 = bench::now();
-      const ClosedSolidFronts f = closed_solid_fronts(s);
-      if (!f.ok) return (void)std::printf("rejected: %s\n", f.problem.c_str());
-      const AspectGraph3 g = plane_aspect_graph(s, f, h, nullptr, /*with_cells=*/false);
-      times.push_back(cpu_now() - t0);
-      walls.push_back(bench::now() - w0);
-      lines = plane_aspect_lines(s, f, h);
-      cells = g.cells[0] + g.cells[1] + g.cells[2];
-      regions = g.regions.size();
-      adjacency = g.adjacency.size();
-    }
-    std::sort(times.begin(), times.end());
-    std::sort(walls.begin(), walls.end());
-    const double t = times[times.size() / 2], w = walls[walls.size() / 2];
-    if (i == 0) first = t;
-    const std::size_t n = s.triangles.size();
-    const double growth = i == 0 ? 0 : std::log(t / prev) / std::log(double(n) / prev_n);
-    std::printf("%8s %9zu %8zu %9zu %9zu %10zu %10.4f %10.4f %10.2f %8.1f %8.2f\n", sizes[i].c_str(), n, lines,
-                cells, regions, adjacency, t, w, 1e6 * t / cells, t / first, growth);
-    std::fflush(stdout);
-    prev = t;
-    prev_n = n;
-  }
+  polytope_pair_table(
+      "non-convex: two convex polytopes side by side, on the plane z = 131072", "lines", sizes, seed, repeat,
+      [&](const Scene& s, const ClosedSolidFronts& f) {
+        return plane_aspect_graph(s, f, h, nullptr, /*with_cells=*/false);
+      },
+      [&](const Scene& s, const ClosedSolidFronts& f) { return plane_aspect_lines(s, f, h); });
 }
 
 // k unit boxes [2i, 2i+1] x [0,1] x [0,1], 12 outward triangles each.
