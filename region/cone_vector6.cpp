@@ -102,25 +102,6 @@ bool normalized_fixed(std::array<i128, 6>& v, Fixed6& out) {
   return true;
 }
 
-// filtered_sum_sign (region/int_vector6) for a length known at compile time: the same sums in the same
-// order, so the same decisions and the same certificate (its error bound), unrolled and inlined into the
-// cone signs, which are the hottest code of a PVS cell (docs/performance.md).
-template <int N>
-inline std::optional<int> filtered_sum_sign_n(const double* x, const double* y) {
-  double s = 0, m = 0;
-  for (int i = 0; i < N; ++i) {
-    const double p = x[i] * y[i];
-    s += p;
-    m += std::fabs(p);
-  }
-  if (!std::isfinite(m)) return std::nullopt;
-  if (m == 0) return 0;
-  const double bound = 0x1p-49 * m;
-  if (s > bound) return 1;
-  if (s < -bound) return -1;
-  return std::nullopt;
-}
-
 // Sign layers: the filter on the approximations, then the fixed layer, then gmp; counted under `counter`
 // (semi_static = filter, exact = fixed or gmp) and in the thread's layer counts.
 template <class Fixed, class Gmp>
@@ -199,7 +180,7 @@ bool operator==(const ConeVector6& a, const ConeVector6& b) {
 int dot_sign(const ConeVector6& a, const ConeVector6& b) {
   static PredicateCounter counter("cone_dot");
   return layered_sign(
-      counter, filtered_sum_sign_n<6>(a.approx().data(), b.approx().data()), a.is_fixed() && b.is_fixed(),
+      counter, filtered_sum_sign<6>(a.approx().data(), b.approx().data()), a.is_fixed() && b.is_fixed(),
       [&](i128& v) { return checked_sum_of_products(a.fixed().data(), b.fixed().data(), 6, v); },
       [&] { return dot(a.to_gmp(), b.to_gmp()); });
 }
@@ -209,7 +190,7 @@ int side_sign(const ConeVector6& a, const ConeVector6& b) {
   const Approx6 &aa = a.approx(), &bb = b.approx();
   const double x[6] = {aa[0], aa[1], aa[2], bb[0], bb[1], bb[2]}, y[6] = {bb[3], bb[4], bb[5], aa[3], aa[4], aa[5]};
   return layered_sign(
-      counter, filtered_sum_sign_n<6>(x, y), a.is_fixed() && b.is_fixed(),
+      counter, filtered_sum_sign<6>(x, y), a.is_fixed() && b.is_fixed(),
       [&](i128& v) {
         const Fixed6 &af = a.fixed(), &bf = b.fixed();
         const std::int64_t xf[6] = {af[0], af[1], af[2], bf[0], bf[1], bf[2]},
@@ -222,7 +203,7 @@ int side_sign(const ConeVector6& a, const ConeVector6& b) {
 int plucker_form_sign(const ConeVector6& a) {
   static PredicateCounter counter("cone_plucker_form");
   return layered_sign(
-      counter, filtered_sum_sign_n<3>(a.approx().data(), a.approx().data() + 3), a.is_fixed(),
+      counter, filtered_sum_sign<3>(a.approx().data(), a.approx().data() + 3), a.is_fixed(),
       [&](i128& v) { return checked_sum_of_products(a.fixed().data(), a.fixed().data() + 3, 3, v); },
       [&] { return plucker_form(a.to_gmp()); });
 }

@@ -10,27 +10,6 @@
 
 namespace exactvis::region {
 
-// sign(sum x[i] * y[i]) over n <= 6 terms of double approximations x~ = x (1 + d), |d| < 2^-52 = 2u, when
-// certified. Error: each product is off by < 5u (1 + 2^-40) |x~ y~| (two input errors and one rounding),
-// the recursive sum adds <= 5u (1 + 2^-40) of the sum of |products|, and the computed m underestimates that
-// sum by a factor >= 1 - 6u: |error| < 11u m, so |s| > 16u m = 2^-49 m certifies the sign. No underflow:
-// a non-zero product has both factors of magnitude >= 1; m == 0 means every term has an exact zero factor.
-// A non-finite m (huge components) is not certified.
-std::optional<int> filtered_sum_sign(const double* x, const double* y, int n) {
-  double s = 0, m = 0;
-  for (int i = 0; i < n; ++i) {
-    const double p = x[i] * y[i];
-    s += p;
-    m += std::fabs(p);
-  }
-  if (!std::isfinite(m)) return std::nullopt;
-  if (m == 0) return 0;
-  const double bound = 0x1p-49 * m;
-  if (s > bound) return 1;
-  if (s < -bound) return -1;
-  return std::nullopt;
-}
-
 namespace {
 
 template <class Exact>
@@ -59,18 +38,18 @@ Approx6 approximate(const IntVec6& v) {
 
 int dot_sign(const IntVec6& a, const Approx6& aa, const IntVec6& b, const Approx6& bb) {
   static PredicateCounter counter("cone_dot");
-  return counted_sign(counter, filtered_sum_sign(aa.data(), bb.data(), 6), [&] { return dot(a, b); });
+  return counted_sign(counter, filtered_sum_sign<6>(aa.data(), bb.data()), [&] { return dot(a, b); });
 }
 
 int side_sign(const IntVec6& a, const Approx6& aa, const IntVec6& b, const Approx6& bb) {
   static PredicateCounter counter("cone_side");
   const double x[6] = {aa[0], aa[1], aa[2], bb[0], bb[1], bb[2]}, y[6] = {bb[3], bb[4], bb[5], aa[3], aa[4], aa[5]};
-  return counted_sign(counter, filtered_sum_sign(x, y, 6), [&] { return side6(a, b); });
+  return counted_sign(counter, filtered_sum_sign<6>(x, y), [&] { return side6(a, b); });
 }
 
 int plucker_form_sign(const IntVec6& a, const Approx6& aa) {
   static PredicateCounter counter("cone_plucker_form");
-  return counted_sign(counter, filtered_sum_sign(aa.data(), aa.data() + 3, 3), [&] { return plucker_form(a); });
+  return counted_sign(counter, filtered_sum_sign<3>(aa.data(), aa.data() + 3), [&] { return plucker_form(a); });
 }
 
 void normalize(IntVec6& v) {
