@@ -59,6 +59,15 @@ inline Scene two_boxes() {
   return make_scene(v, t);
 }
 
+// Three unit cubes in a row along x with gaps of 1 ([2k, 2k+1] x [0,1] x [0,1], k = 0, 1, 2; triangles 12k to
+// 12k + 11 in add_box's order): outside the class of §10.5.
+inline Scene three_boxes() {
+  std::vector<Point3> v;
+  std::vector<std::array<int, 3>> t;
+  for (int k = 0; k < 3; ++k) add_box(v, t, 2 * k, 0, 0, 2 * k + 1, 1, 1);
+  return make_scene(v, t);
+}
+
 // A box with a notch along one edge: [0,3]x[0,2]x[0,2] minus [2,3]x[0,2]x[1,2] (an L-shaped section
 // extruded along y, with a wide base). Ids: section triangles 0-7 (even y = 0, odd y = 2), then two per
 // side wall in section order: 8-9 bottom z = 0, 10-11 x = 3, 12-13 notch floor z = 1, 14-15 notch wall

@@ -20,14 +20,6 @@ using namespace exactvis;
 using namespace exactvis::aspect_test;
 using exact_to_mpq::qv;
 
-// Three unit cubes in a row along x with gaps of 1 (outside the class of §10.5).
-Scene three_boxes() {
-  std::vector<Point3> v;
-  std::vector<std::array<int, 3>> t;
-  for (int k = 0; k < 3; ++k) add_box(v, t, 2 * k, 0, 0, 2 * k + 1, 1, 1);
-  return make_scene(v, t);
-}
-
 // An open heightfield: an (m+1) x (m+1) grid of integer heights in [0, h], two triangles per square.
 Scene heightfield(unsigned seed, int m, int h) {
   std::mt19937 rng(seed);

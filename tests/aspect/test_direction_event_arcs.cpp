@@ -25,13 +25,6 @@ using exact_to_mpq::q;
 using exact_to_mpq::qv;
 using oracle::QVec;
 
-Scene three_boxes() {
-  std::vector<Point3> v;
-  std::vector<std::array<int, 3>> t;
-  for (int k = 0; k < 3; ++k) add_box(v, t, 2 * k, 0, 0, 2 * k + 1, 1, 1);
-  return make_scene(v, t);
-}
-
 // Three triangles in the planes z = 0, 1, 2 whose edges E1 (along x), E2 (along y) and E3 (diagonal) are
 // pairwise skew and all met by the vertical line x = y = 0: a free EEE family.
 Scene three_skew_edges() {

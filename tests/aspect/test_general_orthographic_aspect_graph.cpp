@@ -24,13 +24,6 @@ using namespace exactvis;
 using namespace exactvis::aspect_test;
 using exact_to_mpq::qv;
 
-Scene three_boxes() {
-  std::vector<Point3> v;
-  std::vector<std::array<int, 3>> t;
-  for (int k = 0; k < 3; ++k) add_box(v, t, 2 * k, 0, 0, 2 * k + 1, 1, 1);
-  return make_scene(v, t);
-}
-
 std::vector<std::int64_t> oracle_ids(const Scene& s, const Vec3<Exact>& d) {
   std::vector<std::int64_t> ids;
   for (int i : oracle::direction_aspect(oracle_model(s), qv(d))) ids.push_back(s.triangles[i].id);
