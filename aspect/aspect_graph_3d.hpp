@@ -7,7 +7,10 @@
 
 #include <array>
 #include <cstdint>
+#include <map>
+#include <set>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace exactvis {
@@ -32,6 +35,21 @@ struct AspectEvent3 {
   std::array<int, 2> edge{-1, -1};
   std::vector<std::int64_t> triangles;
 };
+
+// The EV events of an adjacency from (vertex, edge) -> the ids of the triangles whose visibility differs, in
+// key order (the form the graphs collect them in).
+inline std::vector<AspectEvent3> ev_events_of(
+    const std::map<std::pair<int, std::array<int, 2>>, std::set<std::int64_t>>& triangles_of) {
+  std::vector<AspectEvent3> out;
+  for (const auto& [ve, tris] : triangles_of) {
+    AspectEvent3 e;
+    e.vertex = ve.first;
+    e.edge = ve.second;
+    e.triangles.assign(tris.begin(), tris.end());
+    out.push_back(std::move(e));
+  }
+  return out;
+}
 
 struct AspectAdjacency3 {
   int a = 0, b = 0;                   // region ids, a < b

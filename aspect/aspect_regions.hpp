@@ -35,4 +35,15 @@ struct AspectRegions {
 // their first cell; adjacency. Cost: the sum over kept cells of the size of their closure.
 AspectRegions aspect_regions(const std::vector<AspectCell>& cells, const std::vector<bool>& keep);
 
+// The cell a region's aspect and sample are taken from: the first of its members (ascending) of the region's
+// largest dimension. `Cell` is any cell type with a `dimension` (AspectCell, or a graph's own). Cost: the
+// number of members.
+template <class Cell>
+int region_sample_cell(const AspectRegions& regions, std::size_t r, const std::vector<Cell>& cells) {
+  int best = regions.members[r].front();
+  for (int c : regions.members[r])
+    if (cells[c].dimension > cells[best].dimension) best = c;
+  return best;
+}
+
 }  // namespace exactvis

@@ -90,9 +90,7 @@ AspectGraph3 build(const ConvexModel& model, ViewModel view, const ArrangementPl
   for (std::size_t r = 0; r < regions.members.size(); ++r) {
     AspectRegion3 region;
     region.dimension = regions.dimension[r];
-    int best = regions.members[r].front();
-    for (int c : regions.members[r])
-      if (cells[c].dimension > cells[best].dimension) best = c;
+    const int best = region_sample_cell(regions, r, cells);
     const std::string& key = aspect_keys[cells[best].aspect];
     for (int k = 0; k < m; ++k)
       if (key[k] == '1') region.aspect.insert(region.aspect.end(), model.planes[k].triangles.begin(),

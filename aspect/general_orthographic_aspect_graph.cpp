@@ -211,9 +211,7 @@ GeneralOrthographicResult general_orthographic_aspect_graph(const Scene& scene, 
       g.sampled_cells.push_back({regions.region_of[c], cells[c].dimension, cells[c].sample, std::move(signs)});
     }
   for (std::size_t r = 0; r < regions.members.size(); ++r) {
-    int best = regions.members[r].front();
-    for (int c : regions.members[r])
-      if (cells[c].dimension > cells[best].dimension) best = c;
+    const int best = region_sample_cell(regions, r, cells);
     g.regions.push_back({regions.dimension[r], aspect[best], cells[best].sample});
   }
   // Events of an adjacency: per circle holding the lower cell, one free EV arc through it (its aspect differs

@@ -430,9 +430,7 @@ AspectGraph3 orthographic_aspect_graph(const Scene& scene, const ClosedSolidFron
   for (std::size_t r = 0; r < regions.members.size(); ++r) {
     AspectRegion3 region;
     region.dimension = regions.dimension[r];
-    int best = regions.members[r].front();
-    for (int c : regions.members[r])
-      if (cells[c].dimension > cells[best].dimension) best = c;
+    const int best = region_sample_cell(regions, r, cells);
     const auto& key = tracker.aspect(cells[best].aspect);
     for (std::size_t i = 0; i < n; ++i)
       if (AspectTracker::has(key, i)) region.aspect.push_back(scene.triangles[i].id);
@@ -454,13 +452,7 @@ AspectGraph3 orthographic_aspect_graph(const Scene& scene, const ClosedSolidFron
         if (AspectTracker::has(ka, g.triangle) != AspectTracker::has(kb, g.triangle))
           events[{g.vertex, g.edge}].insert(scene.triangles[g.triangle].id);
     }
-    for (const auto& [ve, tris] : events) {
-      AspectEvent3 e;
-      e.vertex = ve.first;
-      e.edge = ve.second;
-      e.triangles.assign(tris.begin(), tris.end());
-      a.events.push_back(std::move(e));
-    }
+    a.events = ev_events_of(events);
     out.adjacency.push_back(std::move(a));
   }
   if (progress) progress(1);

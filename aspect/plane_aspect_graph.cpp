@@ -457,9 +457,7 @@ AspectGraph3 plane_aspect_graph(const Scene& scene, const ClosedSolidFronts& fro
   for (std::size_t r = 0; r < regions.members.size(); ++r) {
     AspectRegion3 region;
     region.dimension = regions.dimension[r];
-    int best = regions.members[r].front();
-    for (int c : regions.members[r])
-      if (cells[c].dimension > cells[best].dimension) best = c;
+    const int best = region_sample_cell(regions, r, cells);
     for (std::size_t t = 0; t < n; ++t)
       if (seen[best][t] == '1') region.aspect.push_back(scene.triangles[t].id);
     std::sort(region.aspect.begin(), region.aspect.end());
@@ -478,13 +476,7 @@ AspectGraph3 plane_aspect_graph(const Scene& scene, const ClosedSolidFronts& fro
         if (seen[adj.lower][g.triangle] != seen[adj.upper][g.triangle])
           events[{g.vertex, g.edge}].insert(scene.triangles[g.triangle].id);
     }
-    for (const auto& [ve, tris] : events) {
-      AspectEvent3 e;
-      e.vertex = ve.first;
-      e.edge = ve.second;
-      e.triangles.assign(tris.begin(), tris.end());
-      a.events.push_back(std::move(e));
-    }
+    a.events = ev_events_of(events);
     out.adjacency.push_back(std::move(a));
   }
   if (with_cells) {
