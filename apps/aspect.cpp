@@ -185,12 +185,29 @@ std::string cost_warning(std::size_t m, ViewModel view, const char* what = "face
   return w.str();
 }
 
+// The outputs of an orthographic graph of a non-convex model: JSON (-o, --json), the sphere pictures
+// (--vtp, --png) from its sampled cells, and the text summary naming `model`. Returns the exit status 0.
+int write_sphere_graph(const AspectOptions& o, const Scene& scene, const AspectGraph3& g, OutputFiles& outputs,
+                       const std::string& model) {
+  const ojson j = graph_json(g);
+  if (!o.output.empty()) exactvis::app::write_json_output(outputs, o.output, j);
+  if (!o.vtp.empty() || !o.png.empty()) {
+    const PartitionPicture pic = sphere_picture_of_cells(g, o.vtp.empty() ? 5 : 6);
+    if (!o.vtp.empty()) write_partition_vtp(outputs, o.vtp, pic);
+    if (!o.png.empty()) write_partition_png(outputs, o.png, png_panels(scene, triangle_indices(scene), g, &pic, 0));
+  }
+  outputs.commit();
+  if (o.json) std::cout << app::json_text(j);
+  else std::cout << summary(g, model) << "\n";
+  return 0;
+}
+
 // Orthographic, a closed solid outside the class of docs/theory.md 10.5 (a front part is not convex):
 // aspect/general_orthographic_aspect_graph, from the free EV arcs and exact per-direction aspects; a model
 // with a free EEE arc gets a one-line error.
 int run_outside_class_orthographic(const AspectOptions& o, const Scene& scene, const std::string& label,
                                    OutputFiles& outputs) {
-  // Cost (docs/performance.md, bench_aspect --general): the EEE triples grow like e^3 n, the cells like m^2.
+  // Cost (docs/performance.md, bench_aspect --row-boxes): the EEE triples grow like e^3 n, the cells like m^2.
   if (scene.triangles.size() > 60 && !o.quiet)
     std::cerr << "aspect: warning: " << scene.triangles.size()
               << " triangles outside the class of docs/theory.md 10.5: the free EEE arcs take O(e^3 n^2) exact "
@@ -202,22 +219,10 @@ int run_outside_class_orthographic(const AspectOptions& o, const Scene& scene, c
     return general_orthographic_aspect_graph(scene, bar.callback(), pictures);
   }();
   if (!r.ok) throw InputError(label + ": " + r.problem);
-  const AspectGraph3& g = r.graph;
-  const ojson j = graph_json(g);
-  if (!o.output.empty()) exactvis::app::write_json_output(outputs, o.output, j);
-  if (pictures) {
-    const PartitionPicture pic = sphere_picture_of_cells(g, o.vtp.empty() ? 5 : 6);
-    if (!o.vtp.empty()) write_partition_vtp(outputs, o.vtp, pic);
-    if (!o.png.empty()) write_partition_png(outputs, o.png, png_panels(scene, triangle_indices(scene), g, &pic, 0));
-  }
-  outputs.commit();
-  if (o.json) std::cout << app::json_text(j);
-  else
-    std::cout << summary(g, "a closed model outside the convex-front class with " +
+  return write_sphere_graph(o, scene, r.graph, outputs,
+                            "a closed model outside the convex-front class with " +
                                 std::to_string(scene.triangles.size()) + " triangles (" + std::to_string(r.circles) +
-                                " great circles of free EV arcs)")
-              << "\n";
-  return 0;
+                                " great circles of free EV arcs)");
 }
 
 // Orthographic, a closed solid that is not convex (aspect/orthographic_aspect_graph when its front parts
@@ -235,21 +240,9 @@ int run_general_orthographic(const AspectOptions& o, const Scene& scene, const s
     // Every cell's sample and sign vector is kept only for the pictures (O(circles) memory per cell).
     return orthographic_aspect_graph(scene, fronts, bar.callback(), !o.vtp.empty() || !o.png.empty());
   }();
-  const ojson j = graph_json(g);
-  if (!o.output.empty())
-    exactvis::app::write_json_output(outputs, o.output, j);
-  if (!o.vtp.empty() || !o.png.empty()) {
-    const PartitionPicture pic = sphere_picture_of_cells(g, o.vtp.empty() ? 5 : 6);
-    if (!o.vtp.empty()) write_partition_vtp(outputs, o.vtp, pic);
-    if (!o.png.empty()) write_partition_png(outputs, o.png, png_panels(scene, triangle_indices(scene), g, &pic, 0));
-  }
-  outputs.commit();
-  if (o.json) std::cout << app::json_text(j);
-  else
-    std::cout << summary(g, "a non-convex closed model with " + std::to_string(scene.triangles.size()) +
-                                " triangles (" + std::to_string(circles) + " great circles)")
-              << "\n";
-  return 0;
+  return write_sphere_graph(o, scene, g, outputs,
+                            "a non-convex closed model with " + std::to_string(scene.triangles.size()) +
+                                " triangles (" + std::to_string(circles) + " great circles)");
 }
 
 // Perspective viewpoints on z = H, a closed solid that is not convex (aspect/plane_aspect_graph: its front
