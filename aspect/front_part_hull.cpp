@@ -1,10 +1,13 @@
 #include "aspect/front_part_hull.hpp"
 
+#include "kernel/predicates.hpp"
+
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/convex_hull_3.h>
 
 #include <map>
+#include <set>
 
 namespace exactvis {
 
@@ -86,6 +89,17 @@ std::array<int, 2> ev_plane_edge(const Vec3<Exact>& normal, int vertex, const Ve
     if (on_line) break;
   }
   return edge;
+}
+
+SceneEdgeTable scene_edge_table(const Scene& scene) {
+  std::set<std::pair<int, int>> edge_set;
+  for (const auto& t : scene.triangles)
+    for (int k = 0; k < 3; ++k) edge_set.insert(std::minmax(t.v[k], t.v[(k + 1) % 3]));
+  SceneEdgeTable table;
+  for (const auto& [a, b] : edge_set) table.edges.push_back({a, b});
+  table.vx.resize(scene.vertices.size());
+  for (std::size_t i = 0; i < table.vx.size(); ++i) table.vx[i] = to_rational(scene.vertices[i]);
+  return table;
 }
 
 }  // namespace exactvis

@@ -3,6 +3,7 @@
 // by the orthographic aspect graph of closed solids (aspect/orthographic_aspect_graph) and their partition of
 // a plane of viewpoints (aspect/plane_aspect_graph).
 #include "kernel/number_types.hpp"
+#include "kernel/scene.hpp"
 #include "kernel/vec3.hpp"
 
 #include <array>
@@ -36,5 +37,14 @@ int supporting_side(const Vec3<Exact>& normal, const Vec3<Exact>& origin, const 
 // vertex index pairs. Cost: O(|edges|) exact signs.
 std::array<int, 2> ev_plane_edge(const Vec3<Exact>& normal, int vertex, const Vec3<Exact>& u, const Vec3<Exact>& w,
                                  const std::vector<std::array<int, 2>>& edges, const std::vector<Vec3<Exact>>& vx);
+
+// The tables ev_plane_edge searches: the scene's distinct edges (vertex index pairs {a, b} with a < b, in
+// ascending order) and its vertices as exact rationals (vx[i] is scene.vertices[i]). Cost O(n log n), n the
+// number of triangles.
+struct SceneEdgeTable {
+  std::vector<std::array<int, 2>> edges;
+  std::vector<Vec3<Exact>> vx;
+};
+SceneEdgeTable scene_edge_table(const Scene& scene);
 
 }  // namespace exactvis

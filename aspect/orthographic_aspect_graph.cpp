@@ -143,13 +143,9 @@ Setup setup(const Scene& scene, const ClosedSolidFronts& fronts) {
   s.hidden_cone.resize(n);
   s.always_hidden.assign(n, false);
   s.never_hidden.assign(n, false);
-  std::set<std::pair<int, int>> edge_set;
-  for (const auto& t : scene.triangles)
-    for (int k = 0; k < 3; ++k) edge_set.insert(std::minmax(t.v[k], t.v[(k + 1) % 3]));
-  std::vector<std::array<int, 2>> edges;
-  for (const auto& [a, b] : edge_set) edges.push_back({a, b});
-  std::vector<Vec3<Exact>> vx(scene.vertices.size());
-  for (std::size_t i = 0; i < vx.size(); ++i) vx[i] = to_rational(scene.vertices[i]);
+  const SceneEdgeTable table = scene_edge_table(scene);
+  const std::vector<std::array<int, 2>>& edges = table.edges;
+  const std::vector<Vec3<Exact>>& vx = table.vx;
 
   // Per triangle, in parallel: its hidden cone's constraints (after pruning), each with the scene edge naming
   // its circle (for the first constraint of each circle and corner). Then, in triangle order, the circles.

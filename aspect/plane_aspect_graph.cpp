@@ -174,13 +174,9 @@ struct Setup {
 Setup setup(const Scene& scene, const ClosedSolidFronts& fronts, const Chart& Q) {
   if (!fronts.ok) throw std::invalid_argument("plane_aspect_graph: the fronts were rejected: " + fronts.problem);
   const std::size_t n = scene.triangles.size();
-  std::set<std::pair<int, int>> edge_set;
-  for (const auto& t : scene.triangles)
-    for (int k = 0; k < 3; ++k) edge_set.insert(std::minmax(t.v[k], t.v[(k + 1) % 3]));
-  std::vector<std::array<int, 2>> edges;
-  for (const auto& [a, b] : edge_set) edges.push_back({a, b});
-  std::vector<Vec3<Exact>> vx(scene.vertices.size());
-  for (std::size_t i = 0; i < vx.size(); ++i) vx[i] = to_rational(scene.vertices[i]);
+  const SceneEdgeTable table = scene_edge_table(scene);
+  const std::vector<std::array<int, 2>>& edges = table.edges;
+  const std::vector<Vec3<Exact>>& vx = table.vx;
 
   std::vector<PerTriangle> per(n);
   tbb::parallel_for(std::size_t(0), n, [&](std::size_t i) {
