@@ -1,6 +1,7 @@
 #pragma once
 // Models shared by the aspect test suites: hand-made polyhedra, random convex polytopes (aspect/random_convex_polytope:
 // generation only, never an oracle) and the conversion to the oracles' triangles.
+#include "aspect/aspect_graph_3d.hpp"
 #include "aspect/random_convex_polytope.hpp"
 #include "kernel/scene.hpp"
 #include "oracles/aspect_oracle.hpp"
@@ -121,6 +122,13 @@ inline std::vector<oracle::OTriangle> oracle_model(const Scene& s) {
     out.push_back(o);
   }
   return out;
+}
+
+// The number of regions of dimension 0, 1 and 2 (orthographic and plane graphs).
+inline std::array<int, 3> per_dimension(const AspectGraph3& g) {
+  std::array<int, 3> d{0, 0, 0};
+  for (const auto& r : g.regions) ++d[r.dimension];
+  return d;
 }
 
 }  // namespace exactvis::aspect_test

@@ -26,12 +26,6 @@ AspectGraph3 graph(const Scene& s) {
   return orthographic_aspect_graph(s, f);
 }
 
-std::array<int, 3> per_dimension(const AspectGraph3& g) {
-  std::array<int, 3> d{0, 0, 0};
-  for (const auto& r : g.regions) ++d[r.dimension];
-  return d;
-}
-
 std::vector<std::int64_t> oracle_ids(const Scene& s, const std::vector<oracle::OTriangle>& model, const Vec3<Exact>& d) {
   std::vector<std::int64_t> ids;
   for (int i : oracle::direction_aspect(model, {q(d.x), q(d.y), q(d.z)})) ids.push_back(s.triangles[i].id);

@@ -32,12 +32,6 @@ AspectGraph3 graph(const Scene& s, const Exact& h) {
   return plane_aspect_graph(s, f, h);
 }
 
-std::array<int, 3> per_dimension(const AspectGraph3& g) {
-  std::array<int, 3> d{0, 0, 0};
-  for (const auto& r : g.regions) ++d[r.dimension];
-  return d;
-}
-
 std::vector<std::int64_t> oracle_ids(const Scene& s, const std::vector<oracle::OTriangle>& model, const Vec3<Exact>& p) {
   std::vector<std::int64_t> ids;
   for (int i : oracle::point_aspect(model, {q(p.x), q(p.y), q(p.z)})) ids.push_back(s.triangles[i].id);
