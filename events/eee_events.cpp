@@ -496,8 +496,10 @@ void eee_segment_ends(const Scene& scene, const TriangleIndex& spatial, const Bo
   for (auto& iv : event.intervals) {
     const RationalLine l = rational_line(f, iv.sample_t);
     const Vec3<Exact> d = l.pts[1] - l.pts[0];
-    const RayHit front = ray_first_hit(scene, spatial, box, l.pts[l.hi], d);
-    const RayHit back = ray_first_hit(scene, spatial, box, l.pts[l.lo], -d);
+    // pts[k] is where the line meets edge k's line.
+    const auto on = [&](int k) { return RayOriginOnEdgeLine{event.edges[k][0], event.edges[k][1]}; };
+    const RayHit front = ray_first_hit(scene, spatial, box, l.pts[l.hi], d, on(l.hi));
+    const RayHit back = ray_first_hit(scene, spatial, box, l.pts[l.lo], -d, on(l.lo));
     iv.front_object = front.triangle >= 0 ? scene.triangles[front.triangle].id : -1;
     iv.back_object = back.triangle >= 0 ? scene.triangles[back.triangle].id : -1;
   }

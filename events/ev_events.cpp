@@ -275,7 +275,7 @@ EvResult enumerate_ev_events(const Scene& scene, const EvOptions& options) {
         iv.sample_t = (rational_parameter(iv.t0) + rational_parameter(iv.t1)) / 2;
         const Vec3<Exact> p = ev_edge_point(scene, ev.edge, iv.sample_t);
         const Vec3<Exact> d = p - V;
-        const RayHit beyond = ray_first_hit(scene, spatial, box, p, d);
+        const RayHit beyond = ray_first_hit(scene, spatial, box, p, d, {ev.edge[0], ev.edge[1]});  // p lies on E
         const RayHit behind = ray_first_hit(scene, spatial, box, V, -d);
         iv.front_object = beyond.triangle >= 0 ? scene.triangles[beyond.triangle].id : -1;
         iv.back_object = behind.triangle >= 0 ? scene.triangles[behind.triangle].id : -1;

@@ -6,6 +6,7 @@
 #include "util/sub_intervals.hpp"
 
 #include <CGAL/Interval_nt.h>
+#include <CGAL/Mpzf.h>
 
 #include <algorithm>
 #include <cmath>
@@ -104,9 +105,23 @@ std::vector<CriticalInterval> split_ev_interval(const Scene& scene, const SceneA
   // Affine alpha = ((X - V) x b) . n / |n|^2 = (X - V) . (b x n) / |n|^2, beta = (X - V) . (n x a) / |n|^2;
   // kept scaled by |n|^2 (P2).
   const Vec3<Exact> ca = cross(b, n), cb = cross(n, a);
-  auto coords = [&](const Vec3<Exact>& x) {
-    const Vec3<Exact> r = x - V;
-    return P2{dot(r, ca), dot(r, cb)};
+  // The same quantities for scene vertices, whose coordinates are doubles: ring operations only, so CGAL::Mpzf
+  // (exact multiprecision floats, no allocation for small sizes) computes them exactly and several times
+  // faster than Gmpq; each result converts to the same canonical rational.
+  using M = CGAL::Mpzf;
+  auto mvec = [](const Point3& p, const Point3& o) {
+    return Vec3<M>{M(p.x) - M(o.x), M(p.y) - M(o.y), M(p.z) - M(o.z)};
+  };
+  const Vec3<M> ma = mvec(pa, pv), mb = mvec(pb, pv);
+  const Vec3<M> mn = cross(ma, mb);
+  const Vec3<M> mca = cross(mb, mn), mcb = cross(mn, ma);
+  // A corner's wedge coordinates and its plane offset f = (X - V) . n (exact, in Mpzf).
+  struct CornerCoords {
+    M alpha, beta, f;
+  };
+  auto corner_coords = [&](const Point3& q) {
+    const Vec3<M> r = mvec(q, pv);
+    return CornerCoords{dot(r, mca), dot(r, mcb), dot(r, mn)};
   };
 
   // Interval filter (rigorous enclosures, decides nothing by rounding): the cut of T with the plane lies in
@@ -165,11 +180,11 @@ std::vector<CriticalInterval> split_ev_interval(const Scene& scene, const SceneA
     for (int k = 0; k < 3; ++k) o[k] = static_cast<int>(orient3d(pv, pa, pb, scene.corner(t, k)));
     if ((o[0] > 0 && o[1] > 0 && o[2] > 0) || (o[0] < 0 && o[1] < 0 && o[2] < 0)) continue;
     if (!may_matter(t)) continue;
-    std::array<Vec3<Exact>, 3> w;
+    std::array<CornerCoords, 3> mc;
     std::array<P2, 3> wc;
     for (int k = 0; k < 3; ++k) {
-      w[k] = to_rational(scene.corner(t, k));
-      wc[k] = coords(w[k]);
+      mc[k] = corner_coords(scene.corner(t, k));
+      wc[k] = {Exact(mc[k].alpha), Exact(mc[k].beta)};
     }
     // Keep only segments whose parameter range can meet [t0, t1] (t is monotone along a segment on which
     // sigma = alpha + beta keeps its sign; otherwise keep it).
@@ -195,9 +210,11 @@ std::vector<CriticalInterval> split_ev_interval(const Scene& scene, const SceneA
       }
       const int j = (k + 1) % 3;
       if (o[k] * o[j] < 0) {  // the edge crosses the plane: interpolate (coordinates are affine)
-        const Exact fk = dot(w[k] - V, n), fj = dot(w[j] - V, n);
-        const Exact lambda = fk / (fk - fj);
-        pts.push_back({wc[k].alpha + lambda * (wc[j].alpha - wc[k].alpha), wc[k].beta + lambda * (wc[j].beta - wc[k].beta)});
+        // X = (f_k X_j - f_j X_k) / (f_k - f_j): numerators in Mpzf, one rational division per coordinate.
+        const M& fk = mc[k].f;
+        const M& fj = mc[j].f;
+        const Exact den(fk - fj);
+        pts.push_back({Exact(fk * mc[j].alpha - fj * mc[k].alpha) / den, Exact(fk * mc[j].beta - fj * mc[k].beta) / den});
         feats.push_back({OccluderFeature::Kind::Edge, {t.v[k], t.v[j]}});
       }
     }
@@ -237,7 +254,7 @@ std::vector<CriticalInterval> split_ev_interval(const Scene& scene, const SceneA
   auto objects_at = [&](const Exact& t) {
     const Vec3<Exact> p = A + t * (Bp - A);
     const Vec3<Exact> d = p - V;
-    const RayHit f = ray_first_hit(scene, spatial, box, p, d);
+    const RayHit f = ray_first_hit(scene, spatial, box, p, d, {edge[0], edge[1]});  // p lies on E
     const RayHit g = ray_first_hit(scene, spatial, box, V, -d);
     return std::pair<int, int>{f.triangle, g.triangle};
   };

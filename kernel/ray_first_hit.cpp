@@ -68,7 +68,9 @@ struct RayInput {
   // The origin as doubles when it is exactly representable (rays from scene vertices): then signs that
   // depend only on the origin and the scene's doubles go through the kernel's double predicates.
   std::optional<Point3> o_double;
-  RayInput(const Vec3<Exact>& origin, const Vec3<Exact>& dir) : o(origin), d(dir) {
+  RayOriginOnEdgeLine on_edge;  // the origin lies on this edge's line (known by construction)
+  RayInput(const Vec3<Exact>& origin, const Vec3<Exact>& dir, const RayOriginOnEdgeLine& origin_on = {})
+      : o(origin), d(dir), on_edge(origin_on) {
     for (int k = 0; k < 3; ++k) oi[k] = enclosing_interval(o[k]), di[k] = enclosing_interval(d[k]);
     // A one-point enclosure [x, x] of a rational means it equals the double x.
     if (oi[0].first == oi[0].second && oi[1].first == oi[1].second && oi[2].first == oi[2].second)
@@ -126,6 +128,11 @@ Sign plane_offset_sign(const RayInput& r, const Scene& scene, const SceneTriangl
   // orient3d (semi-static filter, then Mpzf) decides it, cheaply also when it is zero (o on t's plane, as for
   // every triangle at the vertex a ray starts from).
   if (r.o_double) return -orient3d(scene.corner(t, 0), scene.corner(t, 1), scene.corner(t, 2), *r.o_double);
+  // A triangle through the origin's edge line holds that line, hence the origin, in its plane.
+  if (r.on_edge.a >= 0) {
+    auto has = [&](int v) { return t.v[0] == v || t.v[1] == v || t.v[2] == v; };
+    if (has(r.on_edge.a) && has(r.on_edge.b)) return Sign::Zero;
+  }
   static PredicateCounter counter("ray_plane_offset");
   return filtered_sign<ExactFloat>(counter, [&](auto nt) {
     using NT = typename decltype(nt)::type;
@@ -306,7 +313,7 @@ std::optional<std::vector<std::int64_t>> interval_cover_candidates(const Triangl
 }  // namespace
 
 RayHit ray_first_hit(const Scene& scene, const TriangleIndex& index, const Box3& box, const Vec3<Exact>& origin,
-                     const Vec3<Exact>& dir) {
+                     const Vec3<Exact>& dir, const RayOriginOnEdgeLine& origin_on) {
   RayHit best;
   if (box.empty()) return best;
   // Candidates: triangles whose boxes meet the boxes covering the ray inside the scene box (from interval
@@ -322,7 +329,7 @@ RayHit ray_first_hit(const Scene& scene, const TriangleIndex& index, const Box3&
   // found by comparing hit parameters without constructing them (ties: the lowest index, as the candidates
   // are in index order), and only the winner's parameter is constructed. Coplanar triangles (rare) construct
   // their entry parameter exactly.
-  const RayInput r(origin, dir);
+  const RayInput r(origin, dir, origin_on);
   std::optional<Crossing> nearest;
   std::vector<std::pair<std::int64_t, Exact>> coplanar;
   for (const std::int64_t ti : cand) {

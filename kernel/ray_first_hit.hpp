@@ -20,12 +20,22 @@ struct RayHit {
                       // triangle coplanar with the ray and containing the origin, immediately after it)
 };
 
+// What the caller knows by construction about the ray's origin: it lies on the line through scene vertices
+// a and b (indices into Scene::vertices), e.g. it is A + t (B - A) for a rational t (a point of an event's
+// edge). Every triangle through both vertices then holds the origin in its plane: the plane-offset sign is
+// zero, which a floating-point filter can never decide, so ray_first_hit takes it from here instead of
+// evaluating it exactly. a < 0: nothing known.
+struct RayOriginOnEdgeLine {
+  int a = -1, b = -1;
+};
+
 // Input: scene, its spatial index, its bounding box (bounding_box(scene), computed once by the caller),
-// origin (inside or on that box), dir != 0.
+// origin (inside or on that box), dir != 0, optionally the edge line the origin is known to lie on (the
+// result is the same with or without it; wrong knowledge gives wrong answers).
 // Output: the closed triangle met first by the open ray {origin + s dir : s > 0}; ties go to the lowest index.
 // Exact; candidates come from candidates_in_box over 32 outward-rounded boxes covering the ray inside the box.
 RayHit ray_first_hit(const Scene& scene, const TriangleIndex& index, const Box3& box, const Vec3<Exact>& origin,
-                     const Vec3<Exact>& dir);
+                     const Vec3<Exact>& dir, const RayOriginOnEdgeLine& origin_on = {});
 
 // A ray {o + s d : s > 0} known by interval enclosures of its coordinates and the exact signs of d's.
 struct RayEnclosure {

@@ -133,6 +133,51 @@ TEST(RayFirstHit, RayLeavingTheBoxAtOnceHitsNothing) {
             1);
 }
 
+// Rays from points A + t (B - A) of a triangle's edge line (t inside and outside [0, 1]) with that edge given
+// as RayOriginOnEdgeLine: the triangles through the edge (closed meshes: both faces) are then decided without
+// evaluating their plane offset. Directions: towards scene vertices and random points, and along the plane of
+// one of the edge's faces (coplanar triangles through the origin), each against the brute force.
+TEST(RayFirstHit, OriginOnAKnownEdgeLineAgreesWithBruteForce) {
+  int hits = 0, coplanar_hits = 0;
+  for (const char* kind : {"town", "room", "random"})
+    for (std::uint64_t seed = 1; seed <= 2; ++seed) {
+      const Scene scene = generate_scene(kind, 80, seed);
+      const TriangleIndex index(scene);
+      const Box3 box = bounding_box(scene);
+      std::mt19937_64 rng(seed + 40);
+      auto pick = [&](std::size_t k) { return std::uniform_int_distribution<std::size_t>(0, k - 1)(rng); };
+      auto unit = [&] { return std::uniform_real_distribution<double>(0, 1)(rng); };
+      for (int i = 0; i < 150; ++i) {
+        const SceneTriangle& t = scene.triangles[pick(scene.triangles.size())];
+        const int k = static_cast<int>(pick(3));
+        const int ia = t.v[k], ib = t.v[(k + 1) % 3];
+        const Vec3<Exact> a = exact(scene.vertices[ia]), b = exact(scene.vertices[ib]);
+        const Vec3<Exact> c = exact(scene.vertices[t.v[(k + 2) % 3]]);
+        const Exact u(static_cast<int>(pick(11)) - 2, 7);  // -2/7 .. 8/7
+        const Vec3<Exact> o = a + u * (b - a);
+        Vec3<Exact> d;
+        switch (i % 3) {
+          case 0: d = exact(scene.vertices[pick(scene.vertices.size())]) - o; break;
+          case 1:
+            d = Vec3<Exact>(Exact(box.lo.x + unit() * (box.hi.x - box.lo.x)), Exact(box.lo.y + unit() * (box.hi.y - box.lo.y)),
+                            Exact(box.lo.z + unit() * (box.hi.z - box.lo.z))) - o;
+            break;
+          default: d = (c - o) + Exact(static_cast<int>(pick(5)) - 2, 3) * (b - a);  // in t's plane
+        }
+        if (d.x == 0 && d.y == 0 && d.z == 0) continue;
+        const RayHit got = ray_first_hit(scene, index, box, o, d, {ia, ib});
+        const OracleHit want = brute_first_hit(scene, q(o), q(d));
+        ASSERT_EQ(got.triangle, want.triangle) << kind << " seed " << seed << " ray " << i;
+        if (want.triangle < 0) continue;
+        ++hits;
+        if (i % 3 == 2) ++coplanar_hits;
+        ASSERT_EQ(mpq_class(got.s.mpq()), want.s) << kind << " seed " << seed << " ray " << i;
+      }
+    }
+  EXPECT_GT(hits, 600);
+  EXPECT_GT(coplanar_hits, 200);
+}
+
 TEST(RayFirstHit, DecisionsAreCountedAndUnchangedWithoutFilters) {
   int hits = 0, coplanar = 0;
   reset_predicate_counters();
