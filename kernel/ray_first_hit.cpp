@@ -134,10 +134,25 @@ Sign plane_offset_sign(const RayInput& r, const Scene& scene, const SceneTriangl
     if (has(r.on_edge.a) && has(r.on_edge.b)) return Sign::Zero;
   }
   static PredicateCounter counter("ray_plane_offset");
-  return filtered_sign<ExactFloat>(counter, [&](auto nt) {
+  auto expr = [&](auto nt) {
     using NT = typename decltype(nt)::type;
     return dot(normal_as<NT>(scene, t), r.from_origin<NT>(scene.corner(t, 0)));
-  });
+  };
+  // Layer 1: the expression in BoundedDouble; where it cannot decide and the origin lies on a known edge
+  // line, that line lies in t's plane (both its vertices do, by the kernel's orient3d on doubles) when the
+  // offset is a structural zero, as for coplanar walls and ground triangles along the edge.
+  return filtered_sign_with<ExactFloat>(
+      counter,
+      [&]() -> std::optional<Sign> {
+        if (const auto s = expr(NumberTag<BoundedDouble>{}).certified_sign()) return s;
+        if (r.on_edge.a < 0) return std::nullopt;
+        const Point3 &t0 = scene.corner(t, 0), &t1 = scene.corner(t, 1), &t2 = scene.corner(t, 2);
+        if (orient3d(t0, t1, t2, scene.vertices[r.on_edge.a]) == Sign::Zero &&
+            orient3d(t0, t1, t2, scene.vertices[r.on_edge.b]) == Sign::Zero)
+          return Sign::Zero;
+        return std::nullopt;
+      },
+      expr);
 }
 
 // sign(det[t_k - o, t_k+1 - o, d]). For a ray not parallel to the plane it equals sign(n . d) times the sign
