@@ -1,9 +1,9 @@
-// Orthographic aspect graphs of models that are not closed solids (open surfaces, a non-manifold "book", an
-// inconsistently oriented cube), every triangle a two-sided occluder (docs/theory.md §10.10), through
+// Orthographic aspect graphs of models that are not closed solids (open surfaces, a non-manifold "book", two
+// cubes sharing an edge, an inconsistently oriented cube), every triangle a two-sided occluder (docs/theory.md §10.10), through
 // aspect/general_orthographic_aspect_graph: hand-derived counts (one triangle, a planar quad, two parallel
 // triangles, the reoriented cube) and, on every model, the independent slab oracle (tests/aspect/
 // sphere_graph_checks.hpp: every cell's sample, adjacent regions' samples, random directions located by their
-// sign vector).
+// sign vector); and which failures of closed_solid_fronts send a model to this route.
 #include "aspect/general_orthographic_aspect_graph.hpp"
 
 #include "aspect/closed_solid_fronts.hpp"
@@ -135,6 +135,37 @@ TEST(OpenOrthographicAspectGraph, InconsistentlyOrientedCubeHasTheCubesRegions) 
   EXPECT_EQ(regions_of(r.graph), regions_of(c.graph));
   EXPECT_EQ(r.graph.adjacency.size(), c.graph.adjacency.size());
   check_against_oracle(s, r.graph, 37, 40);
+}
+
+// Two unit cubes sharing the edge x = y = 1 (a closed surface with a non-manifold edge of four triangles): not a
+// closed 2-manifold, so the two-sided route; its triangles meet only in shared corners and edges.
+TEST(OpenOrthographicAspectGraph, CubesSharingAnEdge) {
+  std::vector<Point3> v;
+  std::vector<std::array<int, 3>> t;
+  add_box(v, t, 0, 0, 0, 1, 1, 1);
+  add_box(v, t, 1, 1, 0, 2, 2, 1);
+  const Scene s = make_scene(v, t);
+  const auto r = open_graph(s);
+  check_against_oracle(s, r.graph, 38, 60);
+}
+
+// Which failures of closed_solid_fronts mean "not a closed solid" (the two-sided route) and which do not.
+TEST(OpenOrthographicAspectGraph, NotSolidIsReportedOnlyForSurfacesThatAreNotClosedManifolds) {
+  const ClosedSolidFronts open = closed_solid_fronts(make_scene({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{0, 1, 2}}));
+  EXPECT_TRUE(!open.ok && open.not_solid && !open.outside_class) << open.problem;
+  Scene flipped = cube();
+  std::swap(flipped.triangles[0].v[1], flipped.triangles[0].v[2]);
+  const ClosedSolidFronts f = closed_solid_fronts(flipped);
+  EXPECT_TRUE(!f.ok && f.not_solid) << f.problem;
+  // Two overlapping cubes: each a closed manifold, together self-intersecting: refused, not two-sided.
+  const ClosedSolidFronts x = closed_solid_fronts(combined(cube(), translated(cube(), 1, 1, 1)));
+  EXPECT_TRUE(!x.ok && !x.not_solid) << x.problem;
+  EXPECT_NE(x.problem.find("intersects itself"), std::string::npos) << x.problem;
+  EXPECT_NE(triangle_contact_problem(combined(cube(), translated(cube(), 1, 1, 1))), "");
+  // Three boxes in a row: a closed solid outside the class of 10.5.
+  const ClosedSolidFronts row = closed_solid_fronts(three_boxes());
+  EXPECT_TRUE(!row.ok && row.outside_class && !row.not_solid) << row.problem;
+  EXPECT_TRUE(closed_solid_fronts(l_prism()).ok);
 }
 
 }  // namespace
