@@ -138,6 +138,7 @@ TEST(GeneralOrthographicAspectGraph, UShapedSlotOutsideTheClass) {
   // (+,-,+), (-,+,+) split by the floor's triangles, the octants (+,-,-), (-,+,-) by the walls' triangles.
   EXPECT_EQ(r.graph.regions.size(), 32u);
   EXPECT_EQ(per_dimension(r.graph), (std::array<int, 3>{6, 14, 12}));
+  EXPECT_EQ(r.graph.adjacency.size(), 90u);  // the cube's 72, each half of the symmetry trading 15 for 24
   // One split, checked by its aspects: in the octant (+,-,+), floor triangle 20 is hidden iff d_x >= d_z and
   // |d_y| <= 2 d_x (21 seen); in (+,-,-), wall triangle 22 is hidden iff |d_y| <= 2 |d_z| (23 seen).
   const auto seen = [&](const Vec3<Exact>& d, std::int64_t id) {
