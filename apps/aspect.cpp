@@ -10,6 +10,7 @@
 #include "aspect/orthographic_aspect_graph.hpp"
 #include "aspect/partition_picture.hpp"
 #include "aspect/plane_aspect_graph.hpp"
+#include "aspect/triangle_contacts.hpp"
 #include "io/atomic_file.hpp"
 #include "io/load_scene.hpp"
 #include "io/render_partition_png.hpp"
@@ -202,15 +203,18 @@ int write_sphere_graph(const AspectOptions& o, const Scene& scene, const AspectG
   return 0;
 }
 
-// Orthographic, a closed solid outside the class of docs/theory.md 10.5 (a front part is not convex):
+// Orthographic, a model outside the class of docs/theory.md 10.5: a closed solid whose front parts are not all
+// convex, or (`open`) a model that is not a closed solid at all, its triangles two-sided (10.10):
 // aspect/general_orthographic_aspect_graph, from the free EV arcs and exact per-direction aspects; a model
 // with a free EEE arc gets a one-line error.
 int run_outside_class_orthographic(const AspectOptions& o, const Scene& scene, const std::string& label,
-                                   OutputFiles& outputs) {
+                                   OutputFiles& outputs, bool open) {
   // Cost (docs/performance.md, bench_aspect --row-boxes): the EEE triples grow like e^3 n, the cells like m^2.
   if (scene.triangles.size() > 60 && !o.quiet)
     std::cerr << "aspect: warning: " << scene.triangles.size()
-              << " triangles outside the class of docs/theory.md 10.5: the free EEE arcs take O(e^3 n^2) exact "
+              << (open ? " two-sided triangles of a model that is not a closed solid"
+                       : " triangles outside the class of docs/theory.md 10.5")
+              << ": the free EEE arcs take O(e^3 n^2) exact "
                  "tests and every cell an exact aspect; expect minutes (docs/performance.md)"
               << std::endl;
   const bool pictures = !o.vtp.empty() || !o.png.empty();
@@ -220,17 +224,24 @@ int run_outside_class_orthographic(const AspectOptions& o, const Scene& scene, c
   }();
   if (!r.ok) throw InputError(label + ": " + r.problem);
   return write_sphere_graph(o, scene, r.graph, outputs,
-                            "a closed model outside the convex-front class with " +
-                                std::to_string(scene.triangles.size()) + " triangles (" + std::to_string(r.circles) +
-                                " great circles of free EV arcs)");
+                            std::string(open ? "a model that is not a closed solid (two-sided triangles)"
+                                             : "a closed model outside the convex-front class") +
+                                " with " + std::to_string(scene.triangles.size()) + " triangles (" +
+                                std::to_string(r.circles) + " great circles of free EV arcs)");
 }
 
-// Orthographic, a closed solid that is not convex (aspect/orthographic_aspect_graph when its front parts
-// are convex, else run_outside_class_orthographic).
+// Orthographic, a model that is not convex: a closed solid whose front parts are convex
+// (aspect/orthographic_aspect_graph), else run_outside_class_orthographic: other closed solids, and models that
+// are not closed solids (open, non-manifold or inconsistently oriented) whose triangles meet only in shared
+// corners and edges (aspect/triangle_contacts; each triangle then a two-sided occluder, theory 10.10).
 int run_general_orthographic(const AspectOptions& o, const Scene& scene, const std::string& label,
                              OutputFiles& outputs) {
   const ClosedSolidFronts fronts = closed_solid_fronts(scene);
-  if (!fronts.ok && fronts.outside_class) return run_outside_class_orthographic(o, scene, label, outputs);
+  if (!fronts.ok && fronts.outside_class) return run_outside_class_orthographic(o, scene, label, outputs, false);
+  if (!fronts.ok && fronts.not_solid) {
+    if (const std::string p = triangle_contact_problem(scene); !p.empty()) throw InputError(label + ": " + p);
+    return run_outside_class_orthographic(o, scene, label, outputs, true);
+  }
   if (!fronts.ok) throw InputError(label + ": " + fronts.problem);
   const std::size_t circles = orthographic_aspect_circles(scene, fronts);
   if (const std::string w = cost_warning(circles, ViewModel::Orthographic, "great circles"); !w.empty() && !o.quiet)
@@ -352,7 +363,8 @@ const exactvis::app::CommandRegistration registration(
           "aspect", "exact aspect graph of a 3D model: regions of viewpoints with one set of visible triangles");
       sub->add_option("scene", opts->scenes, "Scene files (.obj .ply .off .stl), loaded as one scene")->required();
       auto* ort = sub->add_flag("--orthographic", opts->orthographic, "viewpoints are directions (the viewing sphere); convex models, closed solids whose front parts are convex "
-                                "(docs/theory.md 10.5) and other closed solids whose free event arcs are EV arcs (10.10)");
+                                "(docs/theory.md 10.5), and other closed solids and open models (two-sided triangles) "
+                                "whose free event arcs are EV arcs (10.10)");
       auto* per = sub->add_flag("--perspective", opts->perspective,
                                 "viewpoints are points outside the model (convex models only)");
       auto* pla = sub->add_option("--plane", opts->plane, "viewpoints on the plane z=H (H a number or num/den); convex models and closed solids whose front parts are convex (docs/theory.md 10.8)");

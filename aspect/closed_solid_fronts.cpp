@@ -45,10 +45,10 @@ ClosedSolidFronts closed_solid_fronts(const Scene& scene) {
       return out.problem = "triangle " + std::to_string(t.id) +
                            " makes the surface non-manifold or inconsistently oriented (a closed oriented "
                            "2-manifold is required)",
-             out;
+             out.not_solid = true, out;
   }
   if (!CGAL::is_closed(mesh))
-    return out.problem = "the model is not closed (an edge has only one triangle)", out;
+    return out.problem = "the model is not closed (an edge has only one triangle)", out.not_solid = true, out;
   if (CGAL::Polygon_mesh_processing::does_self_intersect(mesh))
     return out.problem = "the surface intersects itself (triangles cross or overlap)", out;
 

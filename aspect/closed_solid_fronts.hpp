@@ -32,6 +32,10 @@ struct ClosedSolidFronts {
   // When !ok: the model is a valid closed solid and only a front part is not convex (outside the class of
   // §10.5; aspect/general_orthographic_aspect_graph may still take it).
   bool outside_class = false;
+  // When !ok: the triangles do not form a closed oriented 2-manifold (an edge on one triangle, a non-manifold
+  // edge or vertex, or inconsistent orientations): not a closed solid at all. The orthographic route for such
+  // models takes every triangle as a two-sided occluder (theory §10.10; aspect/triangle_contacts checks them).
+  bool not_solid = false;
   std::vector<TriangleFront> fronts;  // per index into scene.triangles
 };
 

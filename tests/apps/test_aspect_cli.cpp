@@ -211,6 +211,48 @@ TEST(AspectCli, OrthographicNonConvexModels) {
   EXPECT_FALSE(fs::exists(d / "o.json"));
 }
 
+// Models that are not closed solids (issue 16's general polyhedral scenes): --orthographic takes every
+// triangle as a two-sided occluder (docs/theory.md 10.10). Two parallel triangles, the lower one hidden only
+// from a closed 2D region of directions above (tests/aspect's hand count): 4 regions, the issue's JSON shape.
+TEST(AspectCli, OrthographicOpenModels) {
+  const fs::path d = test_dir("open");
+  {
+    std::ofstream f(d / "open.off");
+    f << "OFF\n6 2 0\n0 0 0\n3 0 0\n0 3 0\n-2 -2 1\n7 -2 1\n-2 7 1\n3 0 1 2\n3 3 4 5\n";
+  }
+  const std::string m = (d / "open.off").string();
+  const auto r = run_exactvis(d, "aspect " + m + " --orthographic --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  ASSERT_EQ(j.size(), 3u);
+  EXPECT_EQ(j["counts"]["regions"], 4);
+  EXPECT_EQ(j["counts"]["edges"], 3);
+  ASSERT_EQ(j["regions"].size(), 4u);
+  for (const auto& reg : j["regions"]) {
+    EXPECT_TRUE(reg["aspect"].is_array());
+    EXPECT_EQ(reg["sample"].size(), 3u);
+  }
+  for (const auto& a : j["adjacency"]) EXPECT_EQ(a[2]["type"], "EV");
+  const auto t = run_exactvis(d, "aspect " + m + " --orthographic -q");
+  EXPECT_NE(t.out.find("a model that is not a closed solid (two-sided triangles) with 2 triangles"), std::string::npos)
+      << t.out;
+  // Triangles that cross: a one-line error naming them, no output.
+  {
+    std::ofstream f(d / "crossing.off");
+    f << "OFF\n6 2 0\n0 0 0\n2 0 0\n0 2 0\n0.5 0.5 -1\n0.5 0.5 1\n3 3 0\n3 0 1 2\n3 3 4 5\n";
+  }
+  const auto c = run_exactvis(d, "aspect " + (d / "crossing.off").string() + " --orthographic -q -o " +
+                                     (d / "o.json").string());
+  EXPECT_EQ(c.status, 1);
+  EXPECT_NE(c.err.find("crossing.off: triangles 0 and 1 cross"), std::string::npos) << c.err;
+  EXPECT_EQ(std::count(c.err.begin(), c.err.end(), '\n'), 1);
+  EXPECT_FALSE(fs::exists(d / "o.json"));
+  // A plane of viewpoints still needs a closed solid (docs/theory.md 10.8): the one-line error.
+  const auto p = run_exactvis(d, "aspect " + m + " --plane z=2 -q");
+  EXPECT_EQ(p.status, 1);
+  EXPECT_NE(p.err.find("open.off: the model is not closed"), std::string::npos) << p.err;
+}
+
 TEST(AspectCli, BadOptions) {
   const fs::path d = test_dir("bad");
   write_cube(d / "cube.obj");

@@ -10,10 +10,11 @@
 #include "aspect/direction_event_arcs.hpp"
 #include "aspect/orthographic_aspect_graph.hpp"
 #include "tests/aspect/aspect_test_models.hpp"
-#include "tests/exact_to_mpq.hpp"
+#include "tests/aspect/sphere_graph_checks.hpp"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <map>
 #include <random>
 #include <set>
@@ -22,51 +23,12 @@ namespace {
 
 using namespace exactvis;
 using namespace exactvis::aspect_test;
-using exact_to_mpq::qv;
-
-std::vector<std::int64_t> oracle_ids(const Scene& s, const Vec3<Exact>& d) {
-  std::vector<std::int64_t> ids;
-  for (int i : oracle::direction_aspect(oracle_model(s), qv(d))) ids.push_back(s.triangles[i].id);
-  return ids;
-}
 
 // Regions as (dimension, aspect) multisets, for comparing two methods.
 std::multiset<std::pair<int, std::vector<std::int64_t>>> region_set(const AspectGraph3& g) {
   std::multiset<std::pair<int, std::vector<std::int64_t>>> out;
   for (const auto& r : g.regions) out.insert({r.dimension, r.aspect});
   return out;
-}
-
-void check_against_oracle(const Scene& s, const AspectGraph3& g, unsigned seed, int random_directions) {
-  ASSERT_FALSE(g.sampled_cells.empty());
-  for (const auto& c : g.sampled_cells)
-    EXPECT_EQ(oracle_ids(s, c.direction), g.regions[c.region].aspect)
-        << "cell of dimension " << c.dimension << " in region " << c.region;
-  for (const auto& a : g.adjacency) {
-    EXPECT_NE(oracle_ids(s, g.regions[a.a].sample), oracle_ids(s, g.regions[a.b].sample));
-    EXPECT_FALSE(a.events.empty());
-  }
-  std::map<std::string, int> face_region;
-  for (const auto& c : g.sampled_cells)
-    if (c.dimension == 2) face_region[c.signs] = c.region;
-  std::mt19937 rng(seed);
-  std::uniform_int_distribution<int> coord(-40, 40);
-  int checked = 0;
-  while (checked < random_directions) {
-    const Vec3<Exact> d(Exact(coord(rng)), Exact(coord(rng)), Exact(coord(rng)));
-    std::string signs;
-    bool on_circle = false;
-    for (const auto& n : g.circles) {
-      const int sg = CGAL::sign(dot(n, d));
-      on_circle |= sg == 0;
-      signs += sg > 0 ? '+' : '-';
-    }
-    if (on_circle) continue;
-    ++checked;
-    const auto it = face_region.find(signs);
-    ASSERT_NE(it, face_region.end());
-    EXPECT_EQ(oracle_ids(s, d), g.regions[it->second].aspect) << "d = " << d.x << " " << d.y << " " << d.z;
-  }
 }
 
 GeneralOrthographicResult general(const Scene& s) {
@@ -172,7 +134,24 @@ TEST(GeneralOrthographicAspectGraph, UShapedSlotOutsideTheClass) {
   EXPECT_FALSE(f.ok);
   EXPECT_TRUE(f.outside_class) << f.problem;
   const auto r = general(s);
-  EXPECT_GT(r.graph.regions.size(), 26u);  // the cube's 26 cells, some split by the slot's walls and floor
+  // Hand count (docs/theory.md 10.10): the cube's 26 sign cells, the arcs (+-1, 0, +) and the octants
+  // (+,-,+), (-,+,+) split by the floor's triangles, the octants (+,-,-), (-,+,-) by the walls' triangles.
+  EXPECT_EQ(r.graph.regions.size(), 32u);
+  EXPECT_EQ(per_dimension(r.graph), (std::array<int, 3>{6, 14, 12}));
+  EXPECT_EQ(r.graph.adjacency.size(), 90u);  // the cube's 72, each half of the symmetry trading 15 for 24
+  // One split, checked by its aspects: in the octant (+,-,+), floor triangle 20 is hidden iff d_x >= d_z and
+  // |d_y| <= 2 d_x (21 seen); in (+,-,-), wall triangle 22 is hidden iff |d_y| <= 2 |d_z| (23 seen).
+  const auto seen = [&](const Vec3<Exact>& d, std::int64_t id) {
+    const auto ids = oracle_ids(s, d);
+    return std::find(ids.begin(), ids.end(), id) != ids.end();
+  };
+  EXPECT_FALSE(seen({Exact(2), Exact(-1), Exact(1)}, 20));
+  EXPECT_TRUE(seen({Exact(2), Exact(-1), Exact(1)}, 21));
+  EXPECT_TRUE(seen({Exact(1), Exact(-3), Exact(1)}, 20));
+  EXPECT_TRUE(seen({Exact(1), Exact(-1), Exact(2)}, 20));
+  EXPECT_FALSE(seen({Exact(1), Exact(-1), Exact(-1)}, 22));
+  EXPECT_TRUE(seen({Exact(1), Exact(-1), Exact(-1)}, 23));
+  EXPECT_TRUE(seen({Exact(1), Exact(-3), Exact(-1)}, 22));
   check_against_oracle(s, r.graph, 21, 60);
 }
 
