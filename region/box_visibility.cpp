@@ -11,8 +11,11 @@ bool boxes_meet(const RationalBox3& cell, const Box3& box) {
   return true;
 }
 
-bool box_may_be_visible(const Scene& scene, const std::vector<std::int64_t>& occluders, const RationalBox3& cell,
-                        const Box3& box, const VisibilityOptions& options, VisibilityStats& stats) {
+namespace {
+
+// The loop of box_may_be_visible; `pair_query` decides one stabbing pair against the occluders.
+template <class PairQuery>
+bool box_reached(const RationalBox3& cell, const Box3& box, VisibilityStats& stats, const PairQuery& pair_query) {
   const RationalBox3 b = exact_box(box);
   for (int axis = 0; axis < 3; ++axis)
     for (bool high : {false, true}) {
@@ -32,7 +35,7 @@ bool box_may_be_visible(const Scene& scene, const std::vector<std::int64_t>& occ
             if (!in_front) continue;
             for (const StabbingPair& pair : stabbing_pairs(box_face(cell, ca, chigh), tri)) {
               ++stats.stabbing_pairs;
-              const PairVisibility pv = pair_visibility(scene, occluders, -1, pair, options);
+              const PairVisibility pv = pair_query(pair);
               accumulate(stats, pv.stats);
               if (pv.witness) return true;
             }
@@ -40,6 +43,22 @@ bool box_may_be_visible(const Scene& scene, const std::vector<std::int64_t>& occ
       }
     }
   return false;
+}
+
+}  // namespace
+
+bool box_may_be_visible(const Scene& scene, const std::vector<std::int64_t>& occluders, const RationalBox3& cell,
+                        const Box3& box, const VisibilityOptions& options, VisibilityStats& stats) {
+  return box_reached(cell, box, stats,
+                     [&](const StabbingPair& pair) { return pair_visibility(scene, occluders, -1, pair, options); });
+}
+
+bool box_may_be_visible(const Scene& scene, const HierarchyCandidates& occluders, const Box3& query_box,
+                        const RationalBox3& cell, const Box3& box, const VisibilityOptions& options,
+                        VisibilityStats& stats) {
+  return box_reached(cell, box, stats, [&](const StabbingPair& pair) {
+    return pair_visibility(scene, occluders, query_box, -1, pair, options);
+  });
 }
 
 }  // namespace exactvis::region

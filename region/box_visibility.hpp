@@ -3,6 +3,7 @@
 // hidden-box test of the PVS hierarchy (docs/theory.md §5.8). A box proved hidden with respect to occluders
 // that exclude every triangle inside it hides each of those triangles.
 #include "kernel/scene.hpp"
+#include "region/hierarchy_candidates.hpp"
 #include "region/convex_polygon_3.hpp"
 #include "region/visibility_options.hpp"
 
@@ -19,6 +20,13 @@ namespace exactvis::region {
 // cell-face/triangle CSG of §5.2-§5.5 with these occluders only. Exact; cost: up to 6 such queries.
 bool box_may_be_visible(const Scene& scene, const std::vector<std::int64_t>& occluders, const RationalBox3& cell,
                         const Box3& box, const VisibilityOptions& options, VisibilityStats& stats);
+
+// The same answer and stats with the occluders given as occluders(query_box) (query_box: a box holding the
+// cell and B), gathered per stabbing pair through the finder's hierarchy (region/line_set_csg.hpp), so the
+// cost follows the triangles near each shaft rather than all of them.
+bool box_may_be_visible(const Scene& scene, const HierarchyCandidates& occluders, const Box3& query_box,
+                        const RationalBox3& cell, const Box3& box, const VisibilityOptions& options,
+                        VisibilityStats& stats);
 
 // True iff the closed boxes meet (exact comparisons).
 bool boxes_meet(const RationalBox3& cell, const Box3& box);

@@ -3,6 +3,7 @@
 #include "region/box_visibility.hpp"
 #include "region/cell_visibility.hpp"
 #include "region/from_region_visibility.hpp"
+#include "region/hierarchy_candidates.hpp"
 #include "region/ray_witness.hpp"
 #include "region/single_occluder_culling.hpp"
 #include "region/virtual_occluders.hpp"
@@ -88,7 +89,8 @@ CellPvs exact_cell_pvs(const PvsContext& context, const RationalBox3& cell, cons
   const auto start = std::chrono::steady_clock::now();
   const Scene& scene = context.scene();
   const std::size_t n = scene.triangles.size();
-  const CandidateFinder finder = index_candidates(context.index());
+  // Shaft occluders are gathered through the hierarchy (region/hierarchy_candidates.hpp): same answers.
+  const CandidateFinder finder = hierarchy_candidates(context.index(), scene, context.bvh());
   const Box3 approx = approximate_box(cell);
   std::vector<TriangleAnswer> answers(n);
   std::atomic<std::int64_t> decided{0};
@@ -169,14 +171,15 @@ CellPvs exact_cell_pvs(const PvsContext& context, const RationalBox3& cell, cons
     std::mt19937_64 rng(mix_seed(options.query.seed, n + static_cast<std::uint64_t>(index)));
     if (box_reached_by_rays(node, rng)) return false;
     // Occluders: every triangle outside the subtree (any of the subtree's triangles could be the target).
+    // Gathered per shaft through the hierarchy, as in the triangle queries.
     std::vector<RationalPoint3> corners{cell.lo, cell.hi, to_rational(node.box.lo), to_rational(node.box.hi)};
-    std::vector<std::int64_t> occluders;
-    for (const std::int64_t t : finder(enclosing_box(corners))) {
-      const int pos = bvh.position[t];
-      if (pos < node.begin || pos >= node.end) occluders.push_back(t);
-    }
+    const HierarchyCandidates outside{context.index(), &scene, &bvh, [&bvh, &node](std::int64_t t) {
+                                        const int pos = bvh.position[t];
+                                        return pos >= node.begin && pos < node.end;
+                                      }};
     VisibilityStats stats;
-    const bool hidden = !box_may_be_visible(scene, occluders, cell, node.box, options.query, stats);
+    const bool hidden =
+        !box_may_be_visible(scene, outside, enclosing_box(corners), cell, node.box, options.query, stats);
     stats.exact_evaluations = 0;
     std::lock_guard lock(box_stats_mutex);
     accumulate(box_stats, stats);

@@ -1,5 +1,6 @@
 #include "region/from_region_visibility.hpp"
 
+#include "region/hierarchy_candidates.hpp"
 #include "region/line_set_csg.hpp"
 #include "region/stabbing_pair.hpp"
 
@@ -22,11 +23,16 @@ VisibilityResult visible_from_polygon(const Scene& scene, const CandidateFinder&
   result.triangle_index = triangle_index;
   const auto before = exact_evaluations_total();
   const auto tri = triangle_points(scene, triangle_index);
-  const std::vector<std::int64_t> cands = candidates(enclosing_box(with_triangle(source, tri)));
+  const Box3 box = enclosing_box(with_triangle(source, tri));
+  // With a hierarchy, each pair gathers its shaft occluders through it (the same occluders, §5.2) and the
+  // box's candidates are never listed.
+  const HierarchyCandidates* gather = hierarchy_of(candidates);
+  const std::vector<std::int64_t> cands = gather ? std::vector<std::int64_t>{} : candidates(box);
   const std::vector<StabbingPair> pairs = stabbing_pairs(source, tri);
   result.stats.stabbing_pairs = static_cast<std::int64_t>(pairs.size());
   for (const auto& pair : pairs) {
-    const PairVisibility pv = pair_visibility(scene, cands, triangle_index, pair, options);
+    const PairVisibility pv = gather ? pair_visibility(scene, *gather, box, triangle_index, pair, options)
+                                     : pair_visibility(scene, cands, triangle_index, pair, options);
     accumulate(result.stats, pv.stats);
     if (const auto& w = pv.witness) {
       result.visible = true;

@@ -183,6 +183,19 @@ PairVisibility pair_visibility(const Scene& scene, const std::vector<std::int64_
   return out;
 }
 
+PairVisibility pair_visibility(const Scene& scene, const HierarchyCandidates& finder, const Box3& box, std::int64_t target,
+                               const StabbingPair& pair, const VisibilityOptions& options) {
+  PairVisibility out;
+  // The re-check of a witness visits only the hierarchy near the segment (the same answer).
+  auto is_free = [&](const RationalPoint3& p, const RationalPoint3& q) {
+    return segment_is_free(scene, finder, box, p, q, target);
+  };
+  PairQuery query(shaft_occluders(scene, finder, box, target, pair), is_free, static_cast<std::uint64_t>(target), pair,
+                  options, out.stats);
+  out.witness = query.run();
+  return out;
+}
+
 PairVisibility pair_visibility(const std::vector<std::array<RationalPoint3, 3>>& occluders, std::uint64_t stream,
                                const StabbingPair& pair, const VisibilityOptions& options) {
   PairVisibility out;

@@ -6,6 +6,7 @@
 // (a sample found free and re-checked exactly is a witness too) and order the occluders by how much they
 // block.
 #include "kernel/scene.hpp"
+#include "region/hierarchy_candidates.hpp"
 #include "region/stabbing_pair.hpp"
 #include "region/visibility_options.hpp"
 #include "region/witness.hpp"
@@ -28,6 +29,14 @@ struct PairVisibility {
 // given seed. Cost: the samples, then the CSG (exponential in the number of effective occluders in the worst
 // case, docs/performance.md).
 PairVisibility pair_visibility(const Scene& scene, const std::vector<std::int64_t>& candidates, std::int64_t target,
+                               const StabbingPair& pair, const VisibilityOptions& options);
+
+// The same answer, stats and witness as pair_visibility(scene, finder(box), target, pair, options) (`box`:
+// the box of the whole query), without listing finder(box): the shaft occluders are gathered through
+// finder.pruned, skipping hierarchy boxes outside a shaft plane (region/occluder_shaft.hpp), and each exact
+// re-check of a witness segment through the boxes that meet the segment's. Cost: follows the triangles near
+// the shaft, not those of `box` (with a finder that has a hierarchy).
+PairVisibility pair_visibility(const Scene& scene, const HierarchyCandidates& finder, const Box3& box, std::int64_t target,
                                const StabbingPair& pair, const VisibilityOptions& options);
 
 // The same for occluders given as exact triangles (any rational corners, e.g. the exact boundaries of a

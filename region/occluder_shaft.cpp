@@ -74,6 +74,21 @@ struct ShaftPlane {
     for (const double a : approx) filter_usable = filter_usable && std::isfinite(a) && std::fabs(a) < 0x1p500;
     doubles_exact = filter_usable && Exact(approx[0]) == p.normal.x && Exact(approx[1]) == p.normal.y &&
                     Exact(approx[2]) == p.normal.z && Exact(approx[3]) == p.offset;
+    // The box test picks the corner of largest value by the signs of the rounded normal: they must be the
+    // exact signs (rounding keeps a sign, but a tiny component could round to zero).
+    box_usable = filter_usable && (approx[0] == 0) == (CGAL::sign(p.normal.x) == 0) &&
+                 (approx[1] == 0) == (CGAL::sign(p.normal.y) == 0) && (approx[2] == 0) == (CGAL::sign(p.normal.z) == 0);
+  }
+  bool box_usable = false;  // box_outside may certify
+  // True only when the closed box lies strictly on the outer side (value < 0 at every point, certified by
+  // layer 1 at the corner of largest value); false when unsure. Every triangle inside such a box has its
+  // three corners on the outer side, so the per-triangle culling below would drop it: skipping the box
+  // changes nothing.
+  bool box_outside(const Box3& b) const {
+    if (!box_usable) return false;
+    const Point3 x{approx[0] > 0 ? b.hi.x : b.lo.x, approx[1] > 0 ? b.hi.y : b.lo.y, approx[2] > 0 ? b.hi.z : b.lo.z};
+    const auto s = semi_static(x);
+    return s && *s == Sign::Negative;
   }
   // Layer 1: the certified sign, or nullopt.
   std::optional<Sign> semi_static(const Point3& x) const {
@@ -226,10 +241,11 @@ std::optional<ShaftOccluder> unclipped_occluder(const std::array<Point3, 3>& c) 
 
 }  // namespace
 
-std::vector<ShaftOccluder> shaft_occluders(const Scene& scene, const std::vector<std::int64_t>& candidates,
-                                           std::int64_t target, const StabbingPair& pair) {
-  std::vector<ShaftPlane> planes;
-  for (const auto& p : shaft_planes(pair)) planes.emplace_back(p);
+namespace {
+
+std::vector<ShaftOccluder> occluders_among(const Scene& scene, const std::vector<std::int64_t>& candidates,
+                                           std::int64_t target, const std::vector<ShaftPlane>& planes,
+                                           const StabbingPair& pair) {
   std::vector<ShaftOccluder> out;
   for (const std::int64_t idx : candidates) {
     if (idx == target) continue;
@@ -256,6 +272,35 @@ std::vector<ShaftOccluder> shaft_occluders(const Scene& scene, const std::vector
     }
   }
   return out;
+}
+
+std::vector<ShaftPlane> filtered_shaft_planes(const StabbingPair& pair) {
+  std::vector<ShaftPlane> planes;
+  for (const auto& p : shaft_planes(pair)) planes.emplace_back(p);
+  return planes;
+}
+
+}  // namespace
+
+std::vector<ShaftOccluder> shaft_occluders(const Scene& scene, const std::vector<std::int64_t>& candidates,
+                                           std::int64_t target, const StabbingPair& pair) {
+  return occluders_among(scene, candidates, target, filtered_shaft_planes(pair), pair);
+}
+
+std::vector<ShaftOccluder> shaft_occluders(const Scene& scene, const HierarchyCandidates& finder, const Box3& box,
+                                           std::int64_t target, const StabbingPair& pair) {
+  const std::vector<ShaftPlane> planes = filtered_shaft_planes(pair);
+  std::size_t last = 0;  // the plane that pruned last: neighbouring boxes tend to lie outside the same one
+  auto outside = [&](const Box3& b) {
+    if (planes[last].box_outside(b)) return true;
+    for (std::size_t k = 0; k < planes.size(); ++k)
+      if (k != last && planes[k].box_outside(b)) {
+        last = k;
+        return true;
+      }
+    return false;
+  };
+  return occluders_among(scene, finder.pruned_with(box, outside), target, planes, pair);
 }
 
 std::vector<ShaftOccluder> shaft_occluders(const std::vector<std::array<RationalPoint3, 3>>& triangles,

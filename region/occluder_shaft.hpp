@@ -3,6 +3,7 @@
 // segment from S' to T', culled against the shaft conv(S' u T') and clipped to the wedge between the two
 // polygon planes, each with the side functionals of its clipped polygon's edges (the CSG subtracts the lines
 // passing through all of them on one side).
+#include "region/hierarchy_candidates.hpp"
 #include "region/cone_vector6.hpp"
 #include "region/stabbing_pair.hpp"
 
@@ -31,6 +32,13 @@ std::vector<Plane3> shaft_planes(const StabbingPair& pair);
 // both polygon planes is its own clipped polygon; its edge functionals are then computed from the double
 // corners in the fixed layer (side_functional_of_doubles), without rational clipping. Same output.
 std::vector<ShaftOccluder> shaft_occluders(const Scene& scene, const std::vector<std::int64_t>& candidates,
+                                           std::int64_t target, const StabbingPair& pair);
+
+// The same output as shaft_occluders(scene, finder(box), target, pair), with the candidates gathered by
+// finder.pruned: a hierarchy box that the filtered side test certifies strictly outside one shaft plane is
+// skipped with all its triangles (each would be culled above), so the cost follows the shaft's surroundings,
+// not the number of triangles in `box` (docs/theory.md §5.2).
+std::vector<ShaftOccluder> shaft_occluders(const Scene& scene, const HierarchyCandidates& finder, const Box3& box,
                                            std::int64_t target, const StabbingPair& pair);
 
 // The same culling and clipping for occluders given as exact triangles (any rational corners; every one of
