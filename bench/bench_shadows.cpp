@@ -55,8 +55,8 @@ int main(int argc, char** argv) {
   std::printf("kind %s, seed %llu, vertex irradiance %s, shaft %s, blocker EV cull %s\n", kind.c_str(),
               static_cast<unsigned long long>(seed), vertex_irradiance ? "yes" : "no", shaft ? "on" : "off",
               cull ? "on" : "off");
-  std::printf("%8s %9s %7s %6s %7s %5s %6s %7s %5s %5s %6s %6s %6s %8s %8s %9s %8s %8s %6s %7s\n", "tris", "receivers",
-              "EVcurv", "BBcurv", "EEEcurv", "D0", "faces", "umbra", "arcs", "fail", "ev_s", "bb_s", "eee_s",
+  std::printf("%8s %9s %7s %6s %7s %5s %6s %7s %5s %5s %5s %6s %6s %6s %8s %8s %9s %8s %8s %6s %7s\n", "tris", "receivers",
+              "EVcurv", "BBcurv", "EEEcurv", "D0", "faces", "umbra", "arcs", "poly", "fail", "ev_s", "bb_s", "eee_s",
               "events_s", "recv_s", "ms/recv", "recv/ev", "cpu_s", "shaft%", "growth");
   double prev_n = 0, prev_t = 0;
   for (const auto& item : exactvis::bench::split(sizes)) {
@@ -89,10 +89,11 @@ int main(int argc, char** argv) {
       }
     }
     const double growth = prev_n > 0 ? std::log(cpu / prev_t) / std::log(n / prev_n) : 0;
-    std::printf("%8ld %9zu %7llu %6llu %7llu %5llu %6llu %7llu %5llu %5llu %6.2f %6.2f %6.2f %8.2f %8.2f %9.2f %8.2f %8.2f %6.1f %7s\n",
+    std::printf("%8ld %9zu %7llu %6llu %7llu %5llu %6llu %7llu %5llu %5llu %5llu %6.2f %6.2f %6.2f %8.2f %8.2f %9.2f %8.2f %8.2f %6.1f %7s\n",
                 n, res.receivers.size(), (unsigned long long)ev, (unsigned long long)bb, (unsigned long long)eee,
                 (unsigned long long)d0, (unsigned long long)faces, (unsigned long long)umbra,
-                (unsigned long long)res.stats.conic_arcs, (unsigned long long)res.stats.arrangement_failures,
+                (unsigned long long)res.stats.conic_arcs, (unsigned long long)res.stats.polyline_arrangements,
+                (unsigned long long)res.stats.arrangement_failures,
                 res.stats.seconds_ev - res.stats.seconds_blocker_ev, res.stats.seconds_blocker_ev, res.stats.seconds_eee,
                 res.stats.seconds_events, res.stats.seconds_receivers,
                 1000 * res.stats.seconds_receivers / std::max<std::size_t>(1, res.receivers.size()),

@@ -4,6 +4,8 @@
 #undef NDEBUG
 #include "shadows/conic_arrangement.hpp"
 
+#include "shadows/polyline_arrangement.hpp"
+
 #include <CGAL/Arr_batched_point_location.h>
 #include <CGAL/Arr_conic_traits_2.h>
 #include <CGAL/Arr_extended_dcel.h>
@@ -13,7 +15,10 @@
 #include <CGAL/Cartesian.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <cstdlib>
+#include <fstream>
 #include <iterator>
 #include <map>
 #include <stdexcept>
@@ -390,23 +395,53 @@ ReceiverArrangement build(const std::vector<ArrangementCurve>& curves, const std
   return out;
 }
 
+// Debugging aid: with EXACTVIS_DUMP_ARRANGEMENTS=DIR set, the curves of every receiver on which CGAL's
+// conic traits failed are written to DIR/arrangement_<n>.txt (read_arrangement_curves' format: per curve a
+// line "curve <points> <0|1>", the conic's six coefficients when 1, then one "u v" line per point; exact
+// rationals). Off by default: nothing is written.
+void dump_curves(const std::vector<ArrangementCurve>& curves, const std::string& why) {
+  static std::atomic<int> counter{0};
+  const char* dir = std::getenv("EXACTVIS_DUMP_ARRANGEMENTS");
+  if (dir == nullptr || *dir == 0) return;
+  std::ofstream f(std::string(dir) + "/arrangement_" + std::to_string(counter++) + ".txt");
+  std::string one_line = why;
+  std::replace(one_line.begin(), one_line.end(), '\n', ' ');
+  f << "# " << one_line << "\n";
+  for (const auto& c : curves) {
+    f << "curve " << c.points.size() << " " << (c.conic ? 1 : 0) << "\n";
+    if (c.conic)
+      for (int k = 0; k < 6; ++k) f << to_rational_string((*c.conic)[k]) << (k < 5 ? " " : "\n");
+    for (const auto& p : c.points) f << to_rational_string(p[0]) << " " << to_rational_string(p[1]) << "\n";
+  }
+}
+
 }  // namespace
 
 ReceiverArrangement receiver_arrangement(const std::vector<ArrangementCurve>& curves,
                                          const std::vector<std::array<Exact, 2>>& queries) {
-  // Aggregated sweep, then incremental insertion, each on the arcs as given and then trimmed.
+  // Aggregated sweep, then incremental insertion on the arcs as given; then the certified polyline
+  // arrangement (exact faces, shadows/polyline_arrangement.hpp); then sweep and incremental insertion with
+  // trimmed arcs.
   std::string first;
-  for (const bool trim : {false, true})
-    for (const bool incremental : {false, true}) {
-      try {
-        return build(curves, queries, trim, incremental);
-      } catch (const CGAL::Failure_exception& e) {
-        if (first.empty()) first = e.what();
-      }
+  for (const bool incremental : {false, true}) {
+    try {
+      return build(curves, queries, false, incremental);
+    } catch (const CGAL::Failure_exception& e) {
+      if (first.empty()) first = e.what();
     }
+  }
+  ReceiverArrangement poly = polyline_arrangement(curves, queries);
+  dump_curves(curves, first + (poly.failed ? "; " + poly.failure : "; polyline certified"));
+  if (!poly.failed) return poly;
+  for (const bool incremental : {false, true}) {
+    try {
+      return build(curves, queries, true, incremental);
+    } catch (const CGAL::Failure_exception&) {
+    }
+  }
   ReceiverArrangement out;
   out.failed = true;
-  out.failure = first;
+  out.failure = first + "; " + poly.failure;
   return out;
 }
 

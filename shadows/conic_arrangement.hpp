@@ -52,7 +52,8 @@ struct ReceiverArrangement {
   // CGAL 5.5's Arr_conic_traits_2 violates its own preconditions on some valid inputs (an inconsistent sweep
   // order: Multiset.h "comp_f(object, nodeP->object) != LARGER"), seen where an arc and a segment, or two
   // arcs, touch tangentially (an EEE arc starting where an EV segment ends). Then the curves are inserted one
-  // by one (zone walks) instead of by one sweep; failing that, the arrangement is rebuilt (sweep, then one by
+  // by one (zone walks) instead of by one sweep; failing that, the certified polyline arrangement is built
+  // (`polyline`, exact faces); failing that, the arrangement is rebuilt (sweep, then one by
   // one) with each arc's first and last pieces (between its first two and last two points) as chords
   // (`trimmed_arcs`); a face sample is then taken outside every such chord's lens triangle (the triangle of
   // the chord and the conic's tangents at its ends, which holds the arc piece: exact), so it is on the
@@ -60,6 +61,11 @@ struct ReceiverArrangement {
   // a sample, `uncertified_lenses` chords whose lens could not be certified. If that fails too, nothing
   // else is filled, `failed` is set and `failure` holds CGAL's message (callers fall back, see shadow_mesh).
   std::size_t trimmed_arcs = 0, uncertified_samples = 0, uncertified_lenses = 0;
+  // Built by the certified polyline fallback (shadows/polyline_arrangement.hpp) after CGAL's conic traits
+  // failed on the arcs as given: the faces are the exact arrangement's (combinatorially, with certified
+  // samples), each arc a chain of `arc_pieces` chords in total, areas doubles with a bound.
+  bool polyline = false;
+  std::size_t arc_pieces = 0;
   bool failed = false;
   std::string failure;
 };

@@ -7,10 +7,12 @@
 #include "shadows/blocker_events.hpp"
 #include "shadows/conic_arrangement.hpp"
 #include "shadows/point_irradiance.hpp"
+#include "shadows/polyline_arrangement.hpp"
 #include "shadows/receiver_shaft.hpp"
 #include "util/for_each_index.hpp"
 #include "util/progress_bar.hpp"
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <optional>
@@ -84,6 +86,7 @@ ShadowResult compute_shadows(const Scene& scene, const ShadowOptions& options) {
 
   res.receivers.resize(receivers.size());
   std::atomic<std::uint64_t> backprojections{0}, conic_arcs{0}, chord_curves{0}, arrangement_failures{0}, trimmed_arcs{0},
+      polyline_arrangements{0}, polyline_pieces{0},
       uncertified_samples{0}, box_candidates{0}, shaft_candidates{0}, shaft_outside{0};
   ProgressBar bar("shadows: receivers", receivers.size(), options.progress);
   for_each_index(receivers.size(), options.parallel, 1, [&](std::size_t i) {
@@ -115,9 +118,16 @@ ShadowResult compute_shadows(const Scene& scene, const ShadowOptions& options) {
     for (const auto& f : out.mesh.faces) queries.push_back(f.sample);
     ReceiverArrangement arr = receiver_arrangement(arcs, queries);
     // A triangulation face not located in a face inside the receiver (CGAL 5.5's conic point location can
-    // miss) makes the display mapping impossible: treated as a failure of the arrangement.
-    for (int qf : arr.query_faces)
-      if (qf < 0) arr.failed = true;
+    // miss) makes the display mapping impossible: the certified polyline arrangement is tried instead
+    // (shadows/polyline_arrangement.hpp), and if that fails too, the arrangement counts as failed.
+    auto unlocated = [](const ReceiverArrangement& a) {
+      return std::any_of(a.query_faces.begin(), a.query_faces.end(), [](int qf) { return qf < 0; });
+    };
+    if (!arr.failed && unlocated(arr) && !arr.polyline) {
+      ReceiverArrangement poly = polyline_arrangement(arcs, queries);
+      if (!poly.failed) arr = std::move(poly);
+    }
+    if (unlocated(arr)) arr.failed = true;
     if (arr.failed) {
       // CGAL's conic traits failed (see conic_arrangement.hpp): the faces are the triangulation's, EEE arcs
       // as chords (exact chord-polygon areas; each sample's class is exact for the sample).
@@ -131,6 +141,11 @@ ShadowResult compute_shadows(const Scene& scene, const ShadowOptions& options) {
         arr.faces.push_back(f);
         arr.query_faces.push_back(static_cast<int>(k));
       }
+    }
+    if (arr.polyline) {
+      out.polyline_arrangement = true;
+      ++polyline_arrangements;
+      polyline_pieces += arr.arc_pieces;
     }
     out.conic_arcs = arr.conic_arcs;
     out.chord_curves = arr.chord_curves;
@@ -190,6 +205,8 @@ ShadowResult compute_shadows(const Scene& scene, const ShadowOptions& options) {
   res.stats.chord_curves = chord_curves.load();
   res.stats.arrangement_failures = arrangement_failures.load();
   res.stats.trimmed_arcs = trimmed_arcs.load();
+  res.stats.polyline_arrangements = polyline_arrangements.load();
+  res.stats.polyline_pieces = polyline_pieces.load();
   res.stats.uncertified_samples = uncertified_samples.load();
   res.stats.shaft_box_candidates = box_candidates.load();
   res.stats.shaft_candidates = shaft_candidates.load();

@@ -65,6 +65,7 @@ struct ReceiverShadows {
   // CGAL's conic arrangement failed on this receiver (conic_arrangement.hpp): `faces` are then the
   // triangulation's faces (EEE arcs as chords), as before the arrangement existed.
   bool arrangement_failed = false;
+  bool polyline_arrangement = false;      // faces from the certified polyline fallback (conic_arrangement.hpp)
   std::vector<Vec3<Exact>> vertices;      // mesh vertices in 3D (exact)
   std::vector<double> vertex_irradiance;  // empty unless ShadowOptions::vertex_irradiance
 };
@@ -76,6 +77,9 @@ struct ShadowStats {
   std::uint64_t backprojections = 0;
   std::uint64_t conic_arcs = 0, chord_curves = 0;    // over all receivers
   std::uint64_t arrangement_failures = 0;            // receivers whose conic arrangement failed
+  // Receivers whose faces come from the certified polyline arrangement (shadows/polyline_arrangement.hpp:
+  // exact faces, double areas) after CGAL's conic traits failed, and its chords over those receivers.
+  std::uint64_t polyline_arrangements = 0, polyline_pieces = 0;
   // Arcs whose end pieces entered as chords after a first CGAL failure, and faces (plus lenses) without a
   // certified sample (conic_arrangement.hpp).
   std::uint64_t trimmed_arcs = 0, uncertified_samples = 0;
