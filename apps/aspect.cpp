@@ -261,6 +261,9 @@ int run_general_orthographic(const AspectOptions& o, const Scene& scene, const s
 int run_general_plane(const AspectOptions& o, const Scene& scene, const Exact& height, const std::string& label,
                       OutputFiles& outputs) {
   const ClosedSolidFronts fronts = closed_solid_fronts(scene);
+  if (!fronts.ok && fronts.not_solid)
+    throw InputError(label + ": " + fronts.problem +
+                     "; --plane z=H needs a closed solid (--orthographic takes such models, docs/theory.md 10.10)");
   if (!fronts.ok) throw InputError(label + ": " + fronts.problem);
   const std::size_t lines = plane_aspect_lines(scene, fronts, height);
   if (const std::string w = cost_warning(lines, ViewModel::Plane, "trace lines"); !w.empty() && !o.quiet)
