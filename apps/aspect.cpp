@@ -22,6 +22,7 @@
 #include <cmath>
 #include <fstream>
 #include <iostream>
+#include <set>
 #include <sstream>
 
 namespace {
@@ -209,14 +210,23 @@ int write_sphere_graph(const AspectOptions& o, const Scene& scene, const AspectG
 // with a free EEE arc gets a one-line error.
 int run_outside_class_orthographic(const AspectOptions& o, const Scene& scene, const std::string& label,
                                    OutputFiles& outputs, bool open) {
-  // Cost (docs/performance.md, bench_aspect --row-boxes): the EEE triples grow like e^3 n, the cells like m^2.
-  if (scene.triangles.size() > 60 && !o.quiet)
-    std::cerr << "aspect: warning: " << scene.triangles.size()
-              << (open ? " two-sided triangles of a model that is not a closed solid"
-                       : " triangles outside the class of docs/theory.md 10.5")
-              << ": the free EEE arcs take O(e^3 n^2) exact "
-                 "tests and every cell an exact aspect; expect minutes (docs/performance.md)"
-              << std::endl;
+  // Cost (docs/performance.md): the free arcs grow like e^3 n (0.7 CPU s for a 3 x 3 terrain of 33 edges and
+  // 18 triangles, the costlier per triple of the models measured; rows of boxes 4x less), the cells like m^2.
+  if (scene.triangles.size() > 60 && !o.quiet) {
+    std::set<std::pair<int, int>> edges;
+    for (const auto& t : scene.triangles)
+      for (int k = 0; k < 3; ++k) edges.insert(std::minmax(t.v[k], t.v[(k + 1) % 3]));
+    const double e = static_cast<double>(edges.size()), n = static_cast<double>(scene.triangles.size());
+    std::ostringstream w;
+    w.precision(2);
+    w << "aspect: warning: " << scene.triangles.size()
+      << (open ? " two-sided triangles of a model that is not a closed solid"
+               : " triangles outside the class of docs/theory.md 10.5")
+      << ": the free EEE arcs take O(e^3 n^2) exact tests, roughly " << 0.7 * std::pow(e / 33, 3) * (n / 18)
+      << " s for its " << edges.size()
+      << " edges (scaled like e^3 n from docs/performance.md), then every cell an exact aspect";
+    std::cerr << w.str() << std::endl;
+  }
   const bool pictures = !o.vtp.empty() || !o.png.empty();
   const GeneralOrthographicResult r = [&] {
     app::FractionProgress bar("aspect: arrangement", app::progress_wanted(o.quiet));
@@ -261,6 +271,9 @@ int run_general_orthographic(const AspectOptions& o, const Scene& scene, const s
 int run_general_plane(const AspectOptions& o, const Scene& scene, const Exact& height, const std::string& label,
                       OutputFiles& outputs) {
   const ClosedSolidFronts fronts = closed_solid_fronts(scene);
+  if (!fronts.ok && fronts.not_solid)
+    throw InputError(label + ": " + fronts.problem +
+                     "; --plane z=H needs a closed solid (--orthographic takes such models, docs/theory.md 10.10)");
   if (!fronts.ok) throw InputError(label + ": " + fronts.problem);
   const std::size_t lines = plane_aspect_lines(scene, fronts, height);
   if (const std::string w = cost_warning(lines, ViewModel::Plane, "trace lines"); !w.empty() && !o.quiet)

@@ -71,9 +71,16 @@ GeneralOrthographicResult general_orthographic_aspect_graph(const Scene& scene, 
   if (progress) progress(0.2);
   for (const auto& a : events.arcs) (a.type == DirectionEventArc::Type::EV ? out.ev_arcs : out.eee_arcs)++;
   if (out.eee_arcs > 0) {
+    // Name the first one's generators (EV arcs come first), so that a user can see which edges cause it.
+    const auto& first = events.arcs[out.ev_arcs];
+    std::string edges;
+    for (int k = 0; k < 3; ++k)
+      edges += std::string(k == 0 ? "" : (k == 1 ? ", " : " and ")) + std::to_string(first.edges[k][0]) + "-" +
+               std::to_string(first.edges[k][1]);
     out.problem = std::to_string(out.eee_arcs) +
-                  " free EEE event arcs (conics on the viewing sphere) bound its aspects, and the orthographic "
-                  "aspect graph with EEE arcs is not implemented yet";
+                  " free EEE event arcs (conics on the viewing sphere; the first of lines meeting the edges " + edges +
+                  ", by vertex index) bound its aspects, and the orthographic aspect graph with EEE arcs is not "
+                  "implemented yet";
     return out;
   }
   // Circles: the coordinate ones, then each free EV arc's plane.

@@ -251,6 +251,8 @@ TEST(AspectCli, OrthographicOpenModels) {
   const auto p = run_exactvis(d, "aspect " + m + " --plane z=2 -q");
   EXPECT_EQ(p.status, 1);
   EXPECT_NE(p.err.find("open.off: the model is not closed"), std::string::npos) << p.err;
+  EXPECT_NE(p.err.find("--orthographic takes such models"), std::string::npos) << p.err;
+  EXPECT_EQ(std::count(p.err.begin(), p.err.end(), '\n'), 1);
 }
 
 TEST(AspectCli, BadOptions) {

@@ -15,6 +15,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <map>
 #include <random>
 #include <set>
@@ -81,6 +82,21 @@ TEST(GeneralOrthographicAspectGraph, FreeEeeArcsAreRefused) {
   EXPECT_FALSE(r.ok);
   EXPECT_GT(r.eee_arcs, 0u);
   EXPECT_NE(r.problem.find("EEE"), std::string::npos);
+  // The message names the first arc's three edges "a-b, c-d and e-f" (vertex indices): pairwise skew, so one
+  // from each triangle (two edges of one triangle are coplanar).
+  const std::size_t at = r.problem.find("meeting the edges ");
+  ASSERT_NE(at, std::string::npos) << r.problem;
+  int e[6];
+  ASSERT_EQ(std::sscanf(r.problem.c_str() + at, "meeting the edges %d-%d, %d-%d and %d-%d", &e[0], &e[1], &e[2], &e[3],
+                        &e[4], &e[5]),
+            6)
+      << r.problem;
+  std::set<int> owners;
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_EQ(e[2 * k] / 3, e[2 * k + 1] / 3) << r.problem;  // both ends in one triangle (vertices 3i..3i+2)
+    owners.insert(e[2 * k] / 3);
+  }
+  EXPECT_EQ(owners.size(), 3u) << r.problem;
 }
 
 // Three disjoint tetrahedra, each with one of three pairwise skew edges met by the line x = y = 0 (along x at
