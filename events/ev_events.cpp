@@ -244,6 +244,7 @@ EvResult enumerate_ev_events(const Scene& scene, const EvOptions& options) {
       const VertexFan fan = build_vertex_fan(scene, adj, v);
       EvStats& st = per_vertex_stats[v];
       auto one = [&](int ei) {
+        if (options.accept_pair && !options.accept_pair(v, adj.edges[ei].v)) return;
         if (auto ev = ev_event(scene, adj, index, fan, ei, &st)) per_vertex[v].push_back(std::move(*ev));
       };
       if (!restricted || light_vertex[v]) {

@@ -15,6 +15,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -51,6 +52,11 @@ struct EvOptions {
   bool parallel = true;    // oneTBB over vertices
   bool segment_ends = true;  // find the objects at both ends of each interval's sample line
   bool split_at_end_objects = true;  // with segment_ends: split free intervals where the end objects change
+  // When set, only the (vertex, edge) pairs it accepts are enumerated (edge: its two vertex ids, sorted): the
+  // result is then exactly the subset of the unrestricted result with accepted pairs (each event's intervals
+  // and end objects are computed against the whole scene). A caller's restriction, e.g. the lazy skeleton
+  // pair's wedge-plane test (skeleton/skeleton_pair).
+  std::function<bool(int vertex, const std::array<int, 2>& edge)> accept_pair;
 };
 
 struct EvResult {

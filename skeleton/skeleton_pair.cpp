@@ -1,5 +1,6 @@
 #include "skeleton/skeleton_pair.hpp"
 
+#include "kernel/predicates.hpp"
 #include "kernel/triangle_index.hpp"
 
 #include <algorithm>
@@ -67,7 +68,33 @@ Skeleton3D build_pair_skeleton(const Scene& scene, const SkeletonPairSide& a, co
   }
   sub.objects = scene.objects;
   sub.faces_read = scene.faces_read;
-  const Skeleton3D full = build_skeleton_3d(sub, options);
+  // Only EV pairs whose wedge plane can meet both sides (docs/theory.md section 9, "Lazy build of one pair"):
+  // every line of an EV set lies in the plane of V and E, and a line of the slice, or an end node of one of
+  // its arcs (a limit of such lines, the sides being closed), meets a and b. The plane misses a side when all
+  // of that side's vertices lie strictly on one side of it (exact orient3d on the scene's doubles).
+  std::array<std::vector<int>, 2> side_vertices;
+  for (const SceneTriangle& t : sub.triangles)
+    for (int s = 0; s < 2; ++s)
+      if (on_side(scene, t.id, s == 0 ? a : b)) side_vertices[s].insert(side_vertices[s].end(), t.v.begin(), t.v.end());
+  for (auto& vs : side_vertices) {
+    std::sort(vs.begin(), vs.end());
+    vs.erase(std::unique(vs.begin(), vs.end()), vs.end());
+  }
+  SkeletonOptions sub_options = options;
+  sub_options.accept_ev_pair = [&](int v, const std::array<int, 2>& e) {
+    const Point3 &pv = sub.vertices[v], &pa = sub.vertices[e[0]], &pb = sub.vertices[e[1]];
+    for (const auto& vs : side_vertices) {
+      bool pos = false, neg = false, zero = false;
+      for (int w : vs) {
+        const Sign o = orient3d(pv, pa, pb, sub.vertices[w]);
+        (o == Sign::Positive ? pos : o == Sign::Negative ? neg : zero) = true;
+        if (zero || (pos && neg)) break;
+      }
+      if (!zero && !(pos && neg)) return false;  // the side is strictly on one side of the plane
+    }
+    return true;
+  };
+  const Skeleton3D full = build_skeleton_3d(sub, sub_options);
 
   // The slice, with its arcs' end nodes, renumbered; ids mapped back.
   const SkeletonPairSlice slice = pair_slice(scene, full, a, b);

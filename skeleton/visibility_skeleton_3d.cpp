@@ -114,6 +114,7 @@ Skeleton3D build_skeleton_3d(const Scene& scene, const SkeletonOptions& options)
   EvOptions ev_opt;
   ev_opt.progress = options.progress;
   ev_opt.parallel = options.parallel;
+  ev_opt.accept_pair = options.accept_ev_pair;
   EeeOptions eee_opt;
   eee_opt.progress = options.progress;
   eee_opt.parallel = options.parallel;

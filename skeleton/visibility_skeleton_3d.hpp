@@ -18,6 +18,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <vector>
 
@@ -79,6 +80,9 @@ struct Skeleton3D {
 struct SkeletonOptions {
   bool progress = false;  // progress bars on stderr
   bool parallel = true;   // oneTBB (events and node ends)
+  // EV pairs to enumerate (EvOptions::accept_pair; unset: all). Arcs of rejected pairs and the nodes reached
+  // only through them are then missing: for callers that need only a slice (build_pair_skeleton).
+  std::function<bool(int vertex, const std::array<int, 2>& edge)> accept_ev_pair;
 };
 
 // Input: a scene. Output: its full visibility skeleton (see the header comment). Exact. Cost: the EV and
