@@ -4,7 +4,9 @@
 // exact backprojection per face, optionally per mesh vertex), counts and growth exponents.
 //
 // Usage: bench_shadows [--kind room|town] [--sizes 250,500,1000] [--seed 1] [--vertex-irradiance]
-//                      [--threads N (0: all cores)] [--no-shaft] [--no-cull]
+//                      [--threads N (0: all cores)] [--no-shaft] [--no-cull] [--polyline]
+// --polyline: every receiver with a conic arc takes the certified polyline arrangement first
+// (ShadowOptions::polyline_first; a cross-check of CGAL's conic arrangement: compare the face counts).
 // --no-shaft / --no-cull: without the per-receiver shaft restriction / the blocker-blocker EV cull (the
 // baselines; same output). cpu_s: process CPU seconds (user + system, all threads), the growth exponent's
 // figure; shaft%: shaft candidates kept of those in the receiver-light boxes.
@@ -34,7 +36,7 @@ double cpu_seconds() {
 int main(int argc, char** argv) {
   std::string kind = "room", sizes = "250,500,1000,2000";
   std::uint64_t seed = 1;
-  bool vertex_irradiance = false, shaft = true, cull = true;
+  bool vertex_irradiance = false, shaft = true, cull = true, polyline = false;
   int threads = 0;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
@@ -45,8 +47,9 @@ int main(int argc, char** argv) {
     else if (a == "--vertex-irradiance") vertex_irradiance = true;
     else if (a == "--no-shaft") shaft = false;
     else if (a == "--no-cull") cull = false;
+    else if (a == "--polyline") polyline = true;
     else {
-      std::fprintf(stderr, "usage: bench_shadows [--kind room|town] [--sizes a,b,c] [--seed S] [--vertex-irradiance] [--threads N] [--no-shaft] [--no-cull]\n");
+      std::fprintf(stderr, "usage: bench_shadows [--kind room|town] [--sizes a,b,c] [--seed S] [--vertex-irradiance] [--threads N] [--no-shaft] [--no-cull] [--polyline]\n");
       return 2;
     }
   }
@@ -73,6 +76,7 @@ int main(int argc, char** argv) {
     opt.vertex_irradiance = vertex_irradiance;
     opt.shaft_restriction = shaft;
     opt.blocker_cull = cull;
+    opt.polyline_first = polyline;
     const double c0 = cpu_seconds();
     const auto res = exactvis::shadows::compute_shadows(scene, opt);
     const double cpu = cpu_seconds() - c0;
@@ -100,6 +104,9 @@ int main(int argc, char** argv) {
                 res.stats.seconds_receivers / std::max(1e-9, res.stats.seconds_events), cpu,
                 100.0 * res.stats.shaft_candidates / std::max<std::uint64_t>(1, res.stats.shaft_box_candidates),
                 prev_n > 0 ? std::to_string(growth).substr(0, 4).c_str() : "-");
+    if (polyline)
+      std::printf("  polyline first: %llu receivers also built by CGAL's conic traits, %llu with another face count\n",
+                  (unsigned long long)res.stats.cross_checked, (unsigned long long)res.stats.cross_mismatches);
     std::fflush(stdout);
     prev_n = static_cast<double>(n);
     prev_t = cpu;

@@ -86,7 +86,7 @@ ShadowResult compute_shadows(const Scene& scene, const ShadowOptions& options) {
 
   res.receivers.resize(receivers.size());
   std::atomic<std::uint64_t> backprojections{0}, conic_arcs{0}, chord_curves{0}, arrangement_failures{0}, trimmed_arcs{0},
-      polyline_arrangements{0}, polyline_pieces{0},
+      polyline_arrangements{0}, polyline_pieces{0}, cross_checked{0}, cross_mismatches{0},
       uncertified_samples{0}, box_candidates{0}, shaft_candidates{0}, shaft_outside{0};
   ProgressBar bar("shadows: receivers", receivers.size(), options.progress);
   for_each_index(receivers.size(), options.parallel, 1, [&](std::size_t i) {
@@ -116,7 +116,18 @@ ShadowResult compute_shadows(const Scene& scene, const ShadowOptions& options) {
     out.mesh = receiver_faces(polylines);
     std::vector<std::array<Exact, 2>> queries;
     for (const auto& f : out.mesh.faces) queries.push_back(f.sample);
-    ReceiverArrangement arr = receiver_arrangement(arcs, queries);
+    ReceiverArrangement arr;
+    if (options.polyline_first && std::any_of(arcs.begin(), arcs.end(), [](const ArrangementCurve& c) { return c.conic.has_value(); })) {
+      arr = polyline_arrangement(arcs, queries);
+      ReceiverArrangement cgal = receiver_arrangement(arcs, queries);
+      if (!arr.failed && !cgal.failed && !cgal.polyline) {
+        ++cross_checked;
+        if (cgal.faces.size() != arr.faces.size()) ++cross_mismatches;
+      }
+      if (arr.failed) arr = std::move(cgal);
+    } else {
+      arr = receiver_arrangement(arcs, queries);
+    }
     // A triangulation face not located in a face inside the receiver (CGAL 5.5's conic point location can
     // miss) makes the display mapping impossible: the certified polyline arrangement is tried instead
     // (shadows/polyline_arrangement.hpp), and if that fails too, the arrangement counts as failed.
@@ -207,6 +218,8 @@ ShadowResult compute_shadows(const Scene& scene, const ShadowOptions& options) {
   res.stats.trimmed_arcs = trimmed_arcs.load();
   res.stats.polyline_arrangements = polyline_arrangements.load();
   res.stats.polyline_pieces = polyline_pieces.load();
+  res.stats.cross_checked = cross_checked.load();
+  res.stats.cross_mismatches = cross_mismatches.load();
   res.stats.uncertified_samples = uncertified_samples.load();
   res.stats.shaft_box_candidates = box_candidates.load();
   res.stats.shaft_candidates = shaft_candidates.load();

@@ -34,6 +34,9 @@ struct ShadowOptions {
   // The blocker-blocker EV cull through the light's tetrahedra (BlockerEvOptions::cull; same events).
   bool blocker_cull = true;
   EeeCurveOptions eee;
+  // Every receiver with a conic arc takes the certified polyline arrangement first (CGAL's conic traits
+  // only where it is not certified): a cross-check of the two (bench_shadows --polyline).
+  bool polyline_first = false;
 };
 
 struct FaceShading {
@@ -80,6 +83,9 @@ struct ShadowStats {
   // Receivers whose faces come from the certified polyline arrangement (shadows/polyline_arrangement.hpp:
   // exact faces, double areas) after CGAL's conic traits failed, and its chords over those receivers.
   std::uint64_t polyline_arrangements = 0, polyline_pieces = 0;
+  // ShadowOptions::polyline_first: receivers where CGAL's conic arrangement was built too, and those where
+  // its face count differs from the polyline arrangement's.
+  std::uint64_t cross_checked = 0, cross_mismatches = 0;
   // Arcs whose end pieces entered as chords after a first CGAL failure, and faces (plus lenses) without a
   // certified sample (conic_arrangement.hpp).
   std::uint64_t trimmed_arcs = 0, uncertified_samples = 0;

@@ -280,6 +280,33 @@ TEST(PolylineArrangement, CrossingArcsAgreeWithTheConicArrangement) {
   for (std::size_t k = 0; k < pa.size(); ++k) EXPECT_NEAR(pa[k], ga[k], 1e-6);
 }
 
+// The quarter circle of radius 1/2 and an arc of the circle of radius 23/25 about (1, 1) cross twice near
+// (0.35, 0.35), both crossings between the same two given points of each arc, whose chords (u + v = 0.7 and
+// 0.712) do not cross: the lens test (A) must split both arcs until the thin face between them exists.
+TEST(PolylineArrangement, TwoArcsCrossingTwiceBetweenTheirPoints) {
+  ArrangementCurve c;
+  c.points = {{Exact(42, 65), Exact(49, 325)}, pt(56, 33, 125), pt(33, 56, 125), {Exact(49, 325), Exact(42, 65)}};
+  c.conic = std::array<Exact, 6>{1, 0, 1, -2, -2, Exact(721, 625)};
+  const std::vector<ArrangementCurve> curves{quarter_circle(), c};
+  const ReceiverArrangement p = polyline_arrangement(curves);
+  ASSERT_FALSE(p.failed) << p.failure;
+  EXPECT_EQ(p.conic_arcs, 2u);
+  const ReceiverArrangement g = receiver_arrangement(curves);
+  ASSERT_FALSE(g.failed);
+  ASSERT_FALSE(g.polyline);
+  EXPECT_EQ(p.faces.size(), g.faces.size());
+  // The second arc ends inside the triangle: faces outside the small disc, in it only, in both (the lens).
+  EXPECT_EQ(p.faces.size(), 3u);
+  EXPECT_TRUE(agrees_in_frame(curves, p, frames()[0]));
+  int both = 0;
+  for (const auto& f : p.faces) {
+    const Exact in_small = f.sample[0] * f.sample[0] + f.sample[1] * f.sample[1] - Exact(1, 4);
+    const Exact in_large = (f.sample[0] - 1) * (f.sample[0] - 1) + (f.sample[1] - 1) * (f.sample[1] - 1) - Exact(529, 625);
+    both += in_small < 0 && in_large < 0;
+  }
+  EXPECT_EQ(both, 1);
+}
+
 // Curves in the dump format of conic_arrangement.cpp (EXACTVIS_DUMP_ARRANGEMENTS).
 std::vector<ArrangementCurve> read_dump(const std::string& path) {
   std::ifstream in(path);
