@@ -1,5 +1,6 @@
 #include "region/witness.hpp"
 
+#include "kernel/bounded_double.hpp"
 #include "kernel/round_to_doubles.hpp"
 #include "kernel/segment_triangle_intersection.hpp"
 
@@ -98,6 +99,55 @@ std::optional<Witness> round_witness(const Scene& scene, const CandidateFinder& 
   return r;
 }
 
+namespace {
+
+using BD = BoundedDouble;
+
+// sign(dot(cross(b - a, c - a), d - a)), orient3d's expression, certified by the semi-static layer or nullopt.
+template <class P, class Q, class R, class S>
+std::optional<Sign> certified_orient3d(const P& a, const Q& b, const R& c, const S& d) {
+  const BD ax(a[0]), ay(a[1]), az(a[2]);
+  const BD ux = BD(b[0]) - ax, uy = BD(b[1]) - ay, uz = BD(b[2]) - az;
+  const BD vx = BD(c[0]) - ax, vy = BD(c[1]) - ay, vz = BD(c[2]) - az;
+  const BD wx = BD(d[0]) - ax, wy = BD(d[1]) - ay, wz = BD(d[2]) - az;
+  return ((uy * vz - uz * vy) * wx + (uz * vx - ux * vz) * wy + (ux * vy - uy * vx) * wz).certified_sign();
+}
+
+struct BoundedPoint {  // a rational point as enclosures of its coordinates
+  std::array<BD, 3> c;
+  explicit BoundedPoint(const RationalPoint3& p)
+      : c{BD(tight_interval(p.x)), BD(tight_interval(p.y)), BD(tight_interval(p.z))} {}
+  const BD& operator[](int k) const { return c[static_cast<std::size_t>(k)]; }
+};
+
+// open_segment_meets_closed_triangle(p, q, t) decided in the semi-static layer when it can (the same
+// expressions as its exact path, so the same answer), else nullopt. The triangle's corners are doubles.
+std::optional<bool> certified_meets(const BoundedPoint& p, const BoundedPoint& q, const Point3& t0, const Point3& t1,
+                                    const Point3& t2) {
+  const auto op = certified_orient3d(t0, t1, t2, p), oq = certified_orient3d(t0, t1, t2, q);
+  if (!op || !oq) return std::nullopt;
+  // A certified non-zero value means the triangle has positive area (the exact path then tests the sides).
+  if (*op != Sign::Zero && *op == *oq) return false;  // both strictly on one side
+  if (*op == Sign::Zero || *oq == Sign::Zero) return std::nullopt;
+  // Strictly on opposite sides: the crossing lies in the closed triangle iff the three signs are not mixed.
+  const auto s0 = certified_orient3d(p, q, t0, t1), s1 = certified_orient3d(p, q, t1, t2),
+             s2 = certified_orient3d(p, q, t2, t0);
+  if (!s0 || !s1 || !s2) return std::nullopt;
+  const bool pos = *s0 == Sign::Positive || *s1 == Sign::Positive || *s2 == Sign::Positive;
+  const bool neg = *s0 == Sign::Negative || *s1 == Sign::Negative || *s2 == Sign::Negative;
+  return !(pos && neg);
+}
+
+bool is_double(const RationalPoint3& p) {
+  for (int k = 0; k < 3; ++k) {
+    const auto e = tight_interval(p[k]);  // a point exactly when the coordinate is a double
+    if (e.first != e.second) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
 bool segment_is_free(const Scene& scene, const std::vector<std::int64_t>& candidates, const RationalPoint3& p,
                      const RationalPoint3& q, std::int64_t skip) {
   // A box of doubles enclosing the closed segment: a triangle whose (double) bounding box misses it cannot
@@ -109,15 +159,34 @@ bool segment_is_free(const Scene& scene, const std::vector<std::int64_t>& candid
     lo[static_cast<std::size_t>(k)] = std::min(ep.first, eq.first);
     hi[static_cast<std::size_t>(k)] = std::max(ep.second, eq.second);
   }
+  // Endpoints that are doubles exactly (rounded witnesses): the double form of the same exact predicate
+  // (its exact layer works on doubles, not rationals). Otherwise the semi-static layer decides most
+  // triangles from enclosures of the endpoints computed once; the rest take the rational path.
+  const bool doubles = is_double(p) && is_double(q);
+  Point3 a{}, b{};
+  if (doubles) {
+    a = {CGAL::to_double(p.x), CGAL::to_double(p.y), CGAL::to_double(p.z)};
+    b = {CGAL::to_double(q.x), CGAL::to_double(q.y), CGAL::to_double(q.z)};
+  }
+  const BoundedPoint bp(p), bq(q);
   for (const std::int64_t idx : candidates) {
     if (idx == skip) continue;
     const SceneTriangle& st = scene.triangles[static_cast<std::size_t>(idx)];
     bool apart = false;
     for (int k = 0; k < 3 && !apart; ++k) {
-      const double a = scene.corner(st, 0)[k], b = scene.corner(st, 1)[k], c = scene.corner(st, 2)[k];
-      apart = std::max({a, b, c}) < lo[static_cast<std::size_t>(k)] || std::min({a, b, c}) > hi[static_cast<std::size_t>(k)];
+      const double x = scene.corner(st, 0)[k], y = scene.corner(st, 1)[k], z = scene.corner(st, 2)[k];
+      apart = std::max({x, y, z}) < lo[static_cast<std::size_t>(k)] || std::min({x, y, z}) > hi[static_cast<std::size_t>(k)];
     }
     if (apart) continue;
+    const Point3 &t0 = scene.corner(st, 0), &t1 = scene.corner(st, 1), &t2 = scene.corner(st, 2);
+    if (doubles) {
+      if (open_segment_meets_closed_triangle(a, b, t0, t1, t2)) return false;
+      continue;
+    }
+    if (const auto m = certified_meets(bp, bq, t0, t1, t2)) {
+      if (*m) return false;
+      continue;
+    }
     const auto t = triangle_points(scene, idx);
     if (open_segment_meets_closed_triangle(p, q, t[0], t[1], t[2])) return false;
   }

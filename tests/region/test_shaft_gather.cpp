@@ -7,9 +7,10 @@
 // pruned query with a test that never prunes equals both the index's candidates_in_box and a brute-force
 // scan, on random boxes (also with excluded triangles). End to end: the from-region query and the hidden-box
 // test give the same answers, witnesses and counters through the hierarchy as through the plain index, and
-// the exact segment re-check through the hierarchy equals the scan of every candidate.
+// the exact segment re-check (with and without the hierarchy) equals a brute force with the rational test.
 #include "kernel/predicates.hpp"
 #include "kernel/scene_generators.hpp"
+#include "kernel/segment_triangle_intersection.hpp"
 #include "kernel/triangle_index.hpp"
 #include "region/box_visibility.hpp"
 #include "region/from_region_visibility.hpp"
@@ -163,11 +164,14 @@ TEST(ShaftGather, UnprunedQueryEqualsTheIndexAndBruteForce) {
   }
 }
 
-// The exact segment re-check through the hierarchy against the scan of every candidate of the box, on random
-// segments across towns (many blocked, some free).
-TEST(ShaftGather, SegmentCheckThroughTheHierarchyEqualsTheScan) {
+// The exact segment re-check (segment_is_free: bounding boxes, semi-static layer, double and rational exact
+// paths) over every candidate and through the hierarchy, against a brute force with the rational segment test
+// alone, on random segments across towns: endpoints rational (not doubles), doubles exactly, and segments
+// ending inside a scene triangle (skipped), whose endpoint lies in the plane of coplanar neighbours (the
+// semi-static layer cannot certify those signs).
+TEST(ShaftGather, SegmentCheckEqualsTheRationalBruteForce) {
   std::mt19937_64 rng(8);
-  int free = 0, blocked = 0;
+  int free = 0, blocked = 0, doubles_blocked = 0;
   for (int trial = 0; trial < 3; ++trial) {
     const Scene scene = generate_scene("town", 400, static_cast<std::uint64_t>(trial + 3));
     const TriangleIndex index(scene);
@@ -175,21 +179,40 @@ TEST(ShaftGather, SegmentCheckThroughTheHierarchyEqualsTheScan) {
     const HierarchyCandidates finder{index, &scene, &bvh, {}};
     const Box3 bb = bounding_box(scene);
     std::uniform_real_distribution<double> u(0, 1);
-    auto point = [&] {
-      return RationalPoint3{Exact(bb.lo.x + u(rng) * (bb.hi.x - bb.lo.x)), Exact(bb.lo.y + u(rng) * (bb.hi.y - bb.lo.y)),
-                            Exact(bb.lo.z + u(rng) * (bb.hi.z - bb.lo.z))};
+    auto point = [&](bool dyadic) {
+      RationalPoint3 x{Exact(bb.lo.x + u(rng) * (bb.hi.x - bb.lo.x)), Exact(bb.lo.y + u(rng) * (bb.hi.y - bb.lo.y)),
+                       Exact(bb.lo.z + u(rng) * (bb.hi.z - bb.lo.z))};
+      if (!dyadic) x = x + Exact(1, 3 * 1024) * RationalPoint3{Exact(1), Exact(-1), Exact(1)};
+      return x;
     };
     const std::vector<std::int64_t> all = index.candidates_in_box(bb);
     for (int k = 0; k < 300; ++k) {
-      const RationalPoint3 p = point(), q = k % 3 == 0 ? p + Exact(1, 8) * (point() - p) : point();
-      const auto skip = static_cast<std::int64_t>(rng() % scene.triangles.size());
-      const bool expected = segment_is_free(scene, all, p, q, skip);
+      auto skip = static_cast<std::int64_t>(rng() % scene.triangles.size());
+      const RationalPoint3 p = point(k % 2 == 0);
+      RationalPoint3 q;
+      if (k % 3 == 0) {  // inside triangle `skip` (weights 1/3 + small: in the relative interior)
+        const auto t = triangle_points(scene, skip);
+        const Exact w0 = Exact(1, 3) + Exact(static_cast<int>(rng() % 64), 1024), w1 = Exact(1, 3);
+        q = t[0] + w0 * (t[1] - t[0]) + w1 * (t[2] - t[0]);
+      } else {
+        q = k % 3 == 1 ? p + Exact(1, 8) * (point(true) - p) : point(k % 2 == 0);
+      }
+      bool expected = true;
+      for (std::size_t i = 0; i < scene.triangles.size() && expected; ++i) {
+        if (static_cast<std::int64_t>(i) == skip) continue;
+        const auto t = triangle_points(scene, static_cast<std::int64_t>(i));
+        expected = !open_segment_meets_closed_triangle(p, q, t[0], t[1], t[2]);
+      }
+      ASSERT_EQ(segment_is_free(scene, all, p, q, skip), expected) << "trial " << trial << " segment " << k;
       ASSERT_EQ(segment_is_free(scene, finder, bb, p, q, skip), expected) << "trial " << trial << " segment " << k;
       (expected ? free : blocked) += 1;
+      const bool doubles = k % 6 == 2;  // both endpoints doubles exactly
+      if (doubles && !expected) ++doubles_blocked;
     }
   }
-  EXPECT_GT(free, 20);
+  EXPECT_GT(free, 50);
   EXPECT_GT(blocked, 100);
+  EXPECT_GT(doubles_blocked, 10);
 }
 
 namespace {
