@@ -61,27 +61,44 @@ bool certainly_misses(const IVec& o, const IVec& d, const IVec* to, const Point3
   return false;
 }
 
+// A lower bound of every parameter first_parameter can return for the ray (o, d) and the triangle (a, b, c)
+// (enclosures o, d): the crossing parameter's interval when the ray certainly crosses the plane, else 0 (its
+// results are >= 0).
+double parameter_lower_bound(const IVec& o, const IVec& d, const Point3& a, const Point3& b, const Point3& c) {
+  const IVec ia = enclose(a);
+  const IVec n = cross(sub(enclose(b), ia), sub(enclose(c), ia));
+  const I h1 = dot(n, d);
+  if (!certainly_positive(h1) && !certainly_negative(h1)) return 0;
+  const I s = -dot(n, sub(o, ia)) / h1;
+  return std::max(0.0, s.inf());
+}
+
 Vec3<R> lift(const Point3& p) { return {R(Exact(p.x)), R(Exact(p.y)), R(Exact(p.z))}; }
 
 // The parameter interval {s : origin + s dir in closed T} as a homogeneous pair per bound; computed by
 // clipping the line against T's plane (transversal) or T's three in-plane half-planes (coplanar).
 // Returns the smallest s > 0 of that set (std::nullopt if none); s = 0 stands for "immediately after".
+// With `to` (= o + d), only whether some point with 0 < s < 1 exists: then it returns some s in [0, 1)
+// (crossings: 0, not the crossing parameter), else nullopt or a value >= 1.
 std::optional<R> first_parameter(const Vec3<R>& o, const Vec3<R>& d, const Vec3<R>& a, const Vec3<R>& b,
-                                 const Vec3<R>& c) {
+                                 const Vec3<R>& c, const Vec3<R>* to = nullptr) {
   const Vec3<R> n = cross(b - a, c - a);
   const R h0 = dot(n, o - a), h1 = dot(n, d);
-  if (!CGAL::is_zero(h1)) {
-    // Crossing at s = -h0 / h1, in T iff the point is inside every edge's half-plane.
-    const R s = -h0 / h1;
-    if (CGAL::sign(s) <= 0) return std::nullopt;
-    const Vec3<R> x = o + s * d;
+  const int s1 = CGAL::sign(h1);
+  if (s1 != 0) {
+    // Crossing at s = -h0 / h1 > 0 iff sign(h0) = -sign(h1); the crossing point is in T iff every
+    // det[p - o, q - o, d] * sign(h1) >= 0 (the signs certainly_misses filters): signs only, so the
+    // division and the crossing point are computed only for a hit.
+    const int s0 = CGAL::sign(h0);
+    if (s0 == 0 || s0 == s1) return std::nullopt;
+    if (to && CGAL::sign(dot(n, *to - a)) != s1) return std::nullopt;  // s < 1 iff sign(n.(to - a)) = sign(h1)
     const Vec3<R>* v[3] = {&a, &b, &c};
     for (int k = 0; k < 3; ++k) {
-      const Vec3<R>& p = *v[k];
-      const Vec3<R>& q = *v[(k + 1) % 3];
-      if (CGAL::sign(dot(cross(q - p, x - p), n)) < 0) return std::nullopt;
+      const int det = CGAL::sign(dot(cross(*v[k] - o, *v[(k + 1) % 3] - o), d));
+      if (det != 0 && det != s1) return std::nullopt;
     }
-    return s;
+    if (to) return R(0);  // met before `to`; callers with `to` only ask whether
+    return -h0 / h1;
   }
   if (!CGAL::is_zero(h0)) return std::nullopt;  // parallel to T's plane, off it
   // Coplanar: g_k(s) = ((q - p) x (o + s d - p)) . n >= 0 for each edge, linear in s.
@@ -132,7 +149,7 @@ bool OpenSegmentTest::meets(const Point3& a, const Point3& b, const Point3& c) c
                                               RationalPoint3{Exact(b.x), Exact(b.y), Exact(b.z)},
                                               RationalPoint3{Exact(c.x), Exact(c.y), Exact(c.z)});
   // The first point of the ray from `from` through `to` in the triangle, before `to`.
-  const auto s = first_parameter(from_, to_ - from_, lift(a), lift(b), lift(c));
+  const auto s = first_parameter(from_, to_ - from_, lift(a), lift(b), lift(c), &to_);
   return s && *s < R(1);
 }
 
@@ -174,17 +191,33 @@ std::int64_t line_first_hit(const Scene& scene, const TriangleIndex& index, cons
     cand.resize(scene.triangles.size());
     std::iota(cand.begin(), cand.end(), std::int64_t{0});
   }
+  // The survivors of the filter in order of a lower bound of their parameter (interval arithmetic), decided
+  // exactly until that bound exceeds an upper bound of the best exact parameter: the triangles further along
+  // the ray are never computed. The minimum of (s, index) is the same in any order.
   const IVec io = enclose(origin), id = enclose(dir);
-  std::optional<R> best;
-  std::int64_t best_id = -1;
+  std::vector<std::pair<double, std::int64_t>> live;
   for (const std::int64_t ti : cand) {
     const SceneTriangle& t = scene.triangles[ti];
-    if (certainly_misses(io, id, nullptr, scene.corner(t, 0), scene.corner(t, 1), scene.corner(t, 2))) continue;
+    const Point3 &a = scene.corner(t, 0), &b = scene.corner(t, 1), &c = scene.corner(t, 2);
+    if (certainly_misses(io, id, nullptr, a, b, c)) continue;
+    live.emplace_back(parameter_lower_bound(io, id, a, b, c), ti);
+  }
+  std::sort(live.begin(), live.end());
+  std::optional<R> best;
+  double best_hi = 0;
+  std::int64_t best_ti = -1;
+  for (const auto& [lo, ti] : live) {
+    if (best && lo > best_hi) break;
+    const SceneTriangle& t = scene.triangles[ti];
     const auto s = first_parameter(origin, dir, lift(scene.corner(t, 0)), lift(scene.corner(t, 1)),
                                    lift(scene.corner(t, 2)));
-    if (s && (!best || *s < *best)) best = s, best_id = t.id;
+    if (!s) continue;
+    if (!best || *s < *best || (ti < best_ti && *s == *best)) {
+      best = s, best_ti = ti;
+      best_hi = CGAL::to_interval(*best).second;
+    }
   }
-  return best_id;
+  return best_ti >= 0 ? scene.triangles[best_ti].id : -1;
 }
 
 }  // namespace exactvis

@@ -15,19 +15,21 @@ Vec3<R> lift(const Point3& p) { return {R(Exact(p.x)), R(Exact(p.y)), R(Exact(p.
 
 bool has_corner(const SceneTriangle& t, int v) { return t.v[0] == v || t.v[1] == v || t.v[2] == v; }
 
-// Edge rule for the plane spanned by the line through x with direction d and the edge e.
-bool edge_rule(const Scene& scene, const SceneAdjacency& adj, const EdgeIds& e, const Vec3<R>& x, const Vec3<R>& d) {
+// Edge rule for the plane spanned by a line with direction d that meets the edge e's line at a finite
+// point x: the plane through x, x + d and e has normal (b - a) x (x + d - a) = (b - a) x d, as x - a is a
+// multiple of b - a, so the rule needs only d (no meeting point, no division).
+bool edge_rule(const Scene& scene, const SceneAdjacency& adj, const EdgeIds& e, const Vec3<R>& d) {
   const int ei = adj.edge_index(e[0], e[1]);
   if (ei < 0) return false;
   const Vec3<R> a = lift(scene.vertices[e[0]]), b = lift(scene.vertices[e[1]]);
-  const Vec3<R> y = x + d;
+  const Vec3<R> n = cross(b - a, d);
   int side = 0;
   for (int ti : adj.edges[ei].triangles) {
     const SceneTriangle& t = scene.triangles[ti];
     int w = t.v[0];
     for (int c : t.v)
       if (c != e[0] && c != e[1]) w = c;
-    const int s = CGAL::sign(dot(cross(b - a, y - a), lift(scene.vertices[w]) - a));
+    const int s = CGAL::sign(dot(n, lift(scene.vertices[w]) - a));
     if (s == 0 || (side != 0 && s != side)) return false;
     side = s;
   }
@@ -92,13 +94,26 @@ bool node_line_valid(const Scene& scene, const SceneAdjacency& adj, const Triang
     if (!line_tangent_at_vertex(scene, fan, d, parallel_x ? ey : ex).tangent) return false;
   }
   // Edge generators: met in the relative interior, edge rule.
+  // With w = b - a, the lines meet iff w x dir != 0 (not parallel) and det[a - o, w, dir] = 0 (coplanar);
+  // the meeting point is then a + u w with u = num / c_k on an axis with c_k = (w x dir)_k != 0 (as in
+  // edge_meeting_parameter), so 0 < u < 1 is two signs: signs only, no division in Q(sqrt D).
   for (int i = 0; i < k.edge_count(); ++i) {
     const Vec3<R> a = lift(scene.vertices[k.edges[i][0]]), b = lift(scene.vertices[k.edges[i][1]]);
-    const auto u = edge_meeting_parameter(o, dir, a, b);
-    if (!u || CGAL::sign(*u) <= 0 || !(*u < R(1))) return false;
-    const Vec3<R> x = a + *u * (b - a);
-    if (!is_zero_vector(cross(x - o, dir))) return false;  // skew: not met at all
-    if (!edge_rule(scene, adj, k.edges[i], x, dir)) return false;
+    const Vec3<R> w = b - a;
+    int axis = 0;
+    R c;
+    for (; axis < 3; ++axis) {
+      const int p = (axis + 1) % 3, q = (axis + 2) % 3;
+      c = w[p] * dir[q] - w[q] * dir[p];
+      if (!is_zero_root(c)) break;
+    }
+    if (axis == 3) return false;  // parallel
+    const int p = (axis + 1) % 3, q = (axis + 2) % 3;
+    const R num = (a[q] - o[q]) * dir[p] - (a[p] - o[p]) * dir[q];
+    const int sc = CGAL::sign(c);
+    if (CGAL::sign(num) != sc || CGAL::sign(num - c) != -sc) return false;  // u <= 0 or u >= 1
+    if (!is_zero_root(dot(cross(a - o, w), dir))) return false;            // skew: not met at all
+    if (!edge_rule(scene, adj, k.edges[i], dir)) return false;
   }
   if (face_kind && !in_plane_of(scene, k.faces[0], o, dir)) return false;
   // Free: the open spanned segment against the triangles whose boxes meet its (outward-rounded) box.
