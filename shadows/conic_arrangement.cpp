@@ -4,6 +4,7 @@
 #undef NDEBUG
 #include "shadows/conic_arrangement.hpp"
 
+#include "shadows/arrangement_face_id.hpp"
 #include "shadows/polyline_arrangement.hpp"
 
 #include <CGAL/Arr_batched_point_location.h>
@@ -193,22 +194,6 @@ bool in_closed_triangle(const std::array<Exact, 2>& p, const Lens& t) {
   return (o0 >= 0 && o1 >= 0 && o2 >= 0) || (o0 <= 0 && o1 <= 0 && o2 <= 0);
 }
 
-// The face id (Face data) of a point-location result: on an edge or a vertex, a face next to it with an id.
-int face_id(const CGAL::Arr_point_location_result<Arrangement>::Type& obj) {
-  int id = -1;
-  if (const auto* fh = boost::get<Arrangement::Face_const_handle>(&obj)) id = (*fh)->data();
-  else if (const auto* hh = boost::get<Arrangement::Halfedge_const_handle>(&obj)) {
-    id = (*hh)->face()->data();
-    if (id < 0) id = (*hh)->twin()->face()->data();
-  } else if (const auto* vh = boost::get<Arrangement::Vertex_const_handle>(&obj)) {
-    auto h0 = (*vh)->incident_halfedges();
-    auto h = h0;
-    do {
-      id = h->face()->data();
-    } while (id < 0 && ++h != h0);
-  }
-  return id;
-}
 
 // The face of each query: one batched sweep over the edges and all queries (CGAL::locate, O((E + Q) log E)),
 // matched back to the queries by sorting them in the sweep's xy-lexicographic order (each match checked
@@ -242,7 +227,7 @@ std::vector<int> locate_queries(const Arrangement& arr, const std::vector<std::a
         const bool same = (&p.x() == &pts[k].x() && &p.y() == &pts[k].y()) ||
                           (p.x() == pts[k].x() && p.y() == pts[k].y());
         if (!same) break;  // not the expected order: the rest take the naive location
-        const int id = face_id(results[k].second);
+        const int id = arrangement_face_id<Arrangement>(results[k].second);
         if (id >= 0 || boost::get<Arrangement::Face_const_handle>(&results[k].second) == nullptr) {
           faces[order[k]] = id;
           done[order[k]] = 1;
@@ -254,7 +239,7 @@ std::vector<int> locate_queries(const Arrangement& arr, const std::vector<std::a
   for (std::size_t k = 0; k < queries.size(); ++k) {
     if (done[k]) continue;
     if (!naive) naive.emplace(arr);
-    faces[k] = face_id(naive->locate(alg_point(queries[k])));
+    faces[k] = arrangement_face_id<Arrangement>(naive->locate(alg_point(queries[k])));
   }
   return faces;
 }

@@ -1,5 +1,7 @@
 #include "shadows/polyline_arrangement.hpp"
 
+#include "shadows/arrangement_face_id.hpp"
+
 #include <CGAL/Arr_consolidated_curve_data_traits_2.h>
 #include <CGAL/Arr_extended_dcel.h>
 #include <CGAL/Arr_naive_point_location.h>
@@ -430,21 +432,6 @@ double halfedge_area(const Arrangement::Halfedge_const_handle& h, const std::vec
   return 0.5 * a;
 }
 
-int face_id(const CGAL::Arr_point_location_result<Arrangement>::Type& obj) {
-  int id = -1;
-  if (const auto* fh = boost::get<Arrangement::Face_const_handle>(&obj)) id = (*fh)->data();
-  else if (const auto* hh = boost::get<Arrangement::Halfedge_const_handle>(&obj)) {
-    id = (*hh)->face()->data();
-    if (id < 0) id = (*hh)->twin()->face()->data();
-  } else if (const auto* vh = boost::get<Arrangement::Vertex_const_handle>(&obj)) {
-    auto h0 = (*vh)->incident_halfedges();
-    auto h = h0;
-    do {
-      id = h->face()->data();
-    } while (id < 0 && ++h != h0);
-  }
-  return id;
-}
 
 }  // namespace
 
@@ -664,7 +651,8 @@ ReceiverArrangement polyline_arrangement(const std::vector<ArrangementCurve>& cu
       }
       if (marked == 0) {
         const CGAL::Arr_naive_point_location<Arrangement> naive(arr);
-        for (const auto& qp : queries) res.query_faces.push_back(face_id(naive.locate(SegKernel::Point_2(qp[0], qp[1]))));
+        for (const auto& qp : queries)
+          res.query_faces.push_back(arrangement_face_id<Arrangement>(naive.locate(SegKernel::Point_2(qp[0], qp[1]))));
         return res;
       }
     }
