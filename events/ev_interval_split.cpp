@@ -99,15 +99,10 @@ std::vector<CriticalInterval> split_ev_interval(const Scene& scene, const SceneA
   const Point3& pa = scene.vertices[edge[0]];
   const Point3& pb = scene.vertices[edge[1]];
   const Vec3<Exact> V = to_rational(pv);
-  const Vec3<Exact> a = to_rational(pa) - V, b = to_rational(pb) - V;
-  const Vec3<Exact> n = cross(a, b);
-  const Exact nn = dot(n, n);
-  // Affine alpha = ((X - V) x b) . n / |n|^2 = (X - V) . (b x n) / |n|^2, beta = (X - V) . (n x a) / |n|^2;
-  // kept scaled by |n|^2 (P2).
-  const Vec3<Exact> ca = cross(b, n), cb = cross(n, a);
-  // The same quantities for scene vertices, whose coordinates are doubles: ring operations only, so CGAL::Mpzf
-  // (exact multiprecision floats, no allocation for small sizes) computes them exactly and several times
-  // faster than Gmpq; each result converts to the same canonical rational.
+  // Affine alpha = ((X - V) x b) . n / |n|^2 = (X - V) . (b x n) / |n|^2, beta = (X - V) . (n x a) / |n|^2,
+  // a = A - V, b = B - V, n = a x b; kept scaled by |n|^2 (P2). All inputs are doubles and these are ring
+  // operations, so CGAL::Mpzf (exact multiprecision floats, no allocation for small sizes) computes them
+  // exactly and several times faster than Gmpq; each result converts to the same canonical rational.
   using M = CGAL::Mpzf;
   auto mvec = [](const Point3& p, const Point3& o) {
     return Vec3<M>{M(p.x) - M(o.x), M(p.y) - M(o.y), M(p.z) - M(o.z)};
@@ -115,6 +110,7 @@ std::vector<CriticalInterval> split_ev_interval(const Scene& scene, const SceneA
   const Vec3<M> ma = mvec(pa, pv), mb = mvec(pb, pv);
   const Vec3<M> mn = cross(ma, mb);
   const Vec3<M> mca = cross(mb, mn), mcb = cross(mn, ma);
+  const Exact nn(dot(mn, mn));
   // A corner's wedge coordinates and its plane offset f = (X - V) . n (exact, in Mpzf).
   struct CornerCoords {
     M alpha, beta, f;
@@ -130,7 +126,7 @@ std::vector<CriticalInterval> split_ev_interval(const Scene& scene, const SceneA
   // T is skipped when that range misses [t0, t1], or when 0 < sigma < |n|^2 on all of T (inside the wedge: no
   // end object there in a free interval, and its endpoints and crossings are not on a ray).
   using IP = std::array<I, 3>;
-  auto iv3 = [](const Vec3<Exact>& x) {
+  auto iv3 = [](const Vec3<M>& x) {
     IP r;
     for (int k = 0; k < 3; ++k) {
       const auto p = CGAL::to_interval(x[k]);
@@ -138,7 +134,7 @@ std::vector<CriticalInterval> split_ev_interval(const Scene& scene, const SceneA
     }
     return r;
   };
-  const IP ica = iv3(ca), icb = iv3(cb);
+  const IP ica = iv3(mca), icb = iv3(mcb);
   const double nn_lo = CGAL::to_interval(nn).first;  // sigma < nn_lo certainly means affine sigma < 1
   const auto it0 = CGAL::to_interval(interval.t0), it1 = CGAL::to_interval(interval.t1);
   auto may_matter = [&](const SceneTriangle& tri) {
