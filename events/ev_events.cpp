@@ -245,7 +245,14 @@ EvResult enumerate_ev_events(const Scene& scene, const EvOptions& options) {
       EvStats& st = per_vertex_stats[v];
       auto one = [&](int ei) {
         if (options.accept_pair && !options.accept_pair(v, adj.edges[ei].v)) return;
-        if (auto ev = ev_event(scene, adj, index, fan, ei, &st)) per_vertex[v].push_back(std::move(*ev));
+        auto ev = ev_event(scene, adj, index, fan, ei, &st);
+        if (!ev) return;
+        if (options.accept_interval) {
+          std::erase_if(ev->intervals,
+                        [&](const CriticalInterval& iv) { return !options.accept_interval(v, ev->edge, iv); });
+          if (ev->intervals.empty()) return;
+        }
+        per_vertex[v].push_back(std::move(*ev));
       };
       if (!restricted || light_vertex[v]) {
         for (int ei = 0; ei < static_cast<int>(adj.edges.size()); ++ei) one(ei);

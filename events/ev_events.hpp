@@ -57,6 +57,11 @@ struct EvOptions {
   // and end objects are computed against the whole scene). A caller's restriction, e.g. the lazy skeleton
   // pair's wedge-plane test (skeleton/skeleton_pair).
   std::function<bool(int vertex, const std::array<int, 2>& edge)> accept_pair;
+  // When set, each free interval of an event (before the end-object split) is kept only if it accepts it;
+  // events left without intervals are dropped. The result is then exactly the unrestricted result with the
+  // pieces of the rejected intervals removed (the split of an interval does not depend on the others). A
+  // caller's restriction, e.g. the lazy skeleton pair's pencil-range test (skeleton/skeleton_pair).
+  std::function<bool(int vertex, const std::array<int, 2>& edge, const CriticalInterval& interval)> accept_interval;
 };
 
 struct EvResult {

@@ -1,9 +1,12 @@
 #include "skeleton/skeleton_pair.hpp"
 
+#include "events/ev_pencil_filter.hpp"
 #include "kernel/predicates.hpp"
 #include "kernel/triangle_index.hpp"
+#include "skeleton/node_validity.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <map>
 #include <set>
 
@@ -19,6 +22,30 @@ bool pair_matches(const Scene& scene, const std::array<std::int64_t, 2>& ends, c
 void grow(Box3& box, const Point3& p) {
   box.lo.x = std::min(box.lo.x, p.x), box.lo.y = std::min(box.lo.y, p.y), box.lo.z = std::min(box.lo.z, p.z);
   box.hi.x = std::max(box.hi.x, p.x), box.hi.y = std::max(box.hi.y, p.y), box.hi.z = std::max(box.hi.z, p.z);
+}
+
+// True iff proved that the line {origin + s dir} misses the closed box: the parameter ranges of the slabs
+// of the axes where dir is certainly non-zero are certainly disjoint (interval arithmetic), or the line is
+// certainly outside a slab of an axis along which it certainly does not move. Not thread-safe (RootNumber
+// caches): the caller passes its own copies.
+bool line_misses_box(const Vec3<RootNumber>& origin, const Vec3<RootNumber>& dir, const Box3& box) {
+  using I = CGAL::Interval_nt<>;
+  double s_lo = -std::numeric_limits<double>::infinity(), s_hi = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < 3; ++k) {
+    const auto oi = CGAL::to_interval(origin[k]), di = CGAL::to_interval(dir[k]);
+    const I o(oi.first, oi.second), d(di.first, di.second);
+    if (is_zero_root(dir[k])) {
+      if (o.sup() < box.lo[k] || o.inf() > box.hi[k]) return true;
+      continue;
+    }
+    if (!(d.inf() > 0 || d.sup() < 0)) continue;  // no certain slab range
+    const I u = (I(box.lo[k]) - o) / d, v = (I(box.hi[k]) - o) / d;
+    const I lo = d.inf() > 0 ? u : v, hi = d.inf() > 0 ? v : u;  // the slab's parameter range [lo, hi]
+    s_lo = std::max(s_lo, lo.inf());
+    s_hi = std::min(s_hi, hi.sup());
+    if (s_lo > s_hi) return true;
+  }
+  return false;
 }
 
 }  // namespace
@@ -68,31 +95,41 @@ Skeleton3D build_pair_skeleton(const Scene& scene, const SkeletonPairSide& a, co
   }
   sub.objects = scene.objects;
   sub.faces_read = scene.faces_read;
-  // Only EV pairs whose wedge plane can meet both sides (docs/theory.md section 9, "Lazy build of one pair"):
-  // every line of an EV set lies in the plane of V and E, and a line of the slice, or an end node of one of
-  // its arcs (a limit of such lines, the sides being closed), meets a and b. The plane misses a side when all
-  // of that side's vertices lie strictly on one side of it (exact orient3d on the scene's doubles).
-  std::array<std::vector<int>, 2> side_vertices;
-  for (const SceneTriangle& t : sub.triangles)
-    for (int s = 0; s < 2; ++s)
-      if (on_side(scene, t.id, s == 0 ? a : b)) side_vertices[s].insert(side_vertices[s].end(), t.v.begin(), t.v.end());
-  for (auto& vs : side_vertices) {
-    std::sort(vs.begin(), vs.end());
-    vs.erase(std::unique(vs.begin(), vs.end()), vs.end());
+  // Only EV pairs and free intervals some line of which can meet both sides (docs/theory.md section 9, "Lazy
+  // build of one pair"): a line of the slice, or an end node of one of its arcs (a limit of such lines, the
+  // sides being closed), meets a and b. The pencil-range certificate (events/ev_pencil_filter) proves that
+  // no line L(t), t in the range, meets a side: its box, or each of its triangles.
+  std::array<PencilSide, 2> sides;
+  {
+    std::array<std::map<int, int>, 2> index_of;  // sub-scene vertex id -> index into the side's points
+    for (const SceneTriangle& t : sub.triangles)
+      for (int s = 0; s < 2; ++s)
+        if (on_side(scene, t.id, s == 0 ? a : b)) {
+          std::array<int, 3> tri;
+          for (int k = 0; k < 3; ++k) {
+            const auto [it, inserted] = index_of[s].try_emplace(t.v[k], static_cast<int>(sides[s].points.size()));
+            if (inserted) sides[s].points.push_back(sub.vertices[t.v[k]]);
+            tri[k] = it->second;
+            grow(sides[s].box, sub.vertices[t.v[k]]);
+          }
+          sides[s].triangles.push_back(tri);
+        }
   }
+  auto reachable = [&](int v, const std::array<int, 2>& e, std::pair<double, double> t0, std::pair<double, double> t1) {
+    const EvPencilRange range(sub.vertices[v], sub.vertices[e[0]], sub.vertices[e[1]], t0.first, t0.second,
+                              t1.first, t1.second);
+    return !range.misses_side(sides[0]) && !range.misses_side(sides[1]);
+  };
   SkeletonOptions sub_options = options;
-  sub_options.accept_ev_pair = [&](int v, const std::array<int, 2>& e) {
-    const Point3 &pv = sub.vertices[v], &pa = sub.vertices[e[0]], &pb = sub.vertices[e[1]];
-    for (const auto& vs : side_vertices) {
-      bool pos = false, neg = false, zero = false;
-      for (int w : vs) {
-        const Sign o = orient3d(pv, pa, pb, sub.vertices[w]);
-        (o == Sign::Positive ? pos : o == Sign::Negative ? neg : zero) = true;
-        if (zero || (pos && neg)) break;
-      }
-      if (!zero && !(pos && neg)) return false;  // the side is strictly on one side of the plane
-    }
-    return true;
+  sub_options.accept_ev_pair = [&](int v, const std::array<int, 2>& e) { return reachable(v, e, {0, 0}, {1, 1}); };
+  sub_options.accept_ev_interval = [&](int v, const std::array<int, 2>& e, const CriticalInterval& iv) {
+    return reachable(v, e, enclosing_interval(rational_parameter(iv.t0)), enclosing_interval(rational_parameter(iv.t1)));
+  };
+  // Only the slice's nodes and arcs and the arcs' end nodes are used: the other nodes need no validity, and
+  // a node line proved to miss a side's box is none of them (no end objects for it).
+  sub_options.wanted_ends = [&](const std::array<std::int64_t, 2>& ends) { return pair_matches(scene, ends, a, b); };
+  sub_options.node_line_may_matter = [&](const Vec3<RootNumber>& o, const Vec3<RootNumber>& d) {
+    return !line_misses_box(o, d, sides[0].box) && !line_misses_box(o, d, sides[1].box);
   };
   const Skeleton3D full = build_skeleton_3d(sub, sub_options);
 

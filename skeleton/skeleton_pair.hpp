@@ -28,8 +28,9 @@ SkeletonPairSlice pair_slice(const Scene& scene, const Skeleton3D& skeleton, con
 // that slice of build_skeleton_3d(scene) (same keys, arcs, parameters and end objects): a maximal free
 // segment ending on a and b lies in the convex hull of the two, so the build runs on the sub-scene of the
 // closed triangles meeting the bounding box of a and b (vertex ids compacted in order, which keeps every
-// canonical order, and mapped back); EV pairs whose wedge plane misses a or b are not enumerated (they
-// contribute nothing to the slice: docs/theory.md section 9). Cost: that restricted build on the sub-scene.
+// canonical order, and mapped back); EV pairs, and EV free intervals, no line of which can meet both a and b
+// (a certificate of events/ev_pencil_filter) are not enumerated (they contribute nothing to the slice:
+// docs/theory.md section 9). Cost: that restricted build on the sub-scene.
 Skeleton3D build_pair_skeleton(const Scene& scene, const SkeletonPairSide& a, const SkeletonPairSide& b,
                                const SkeletonOptions& options = {});
 

@@ -64,9 +64,9 @@ NodeLine eee_end_line(const Scene& scene, const EeeEvent& ev, const R& t, bool k
   return n;
 }
 
-// Spanned segment and end objects of a node.
-void finish_node(const Scene& scene, const SceneAdjacency& adj, const TriangleIndex& index, const Box3& box,
-                 const NodeLine& line, SkeletonNode& node) {
+// Spanned segment of a node and, when `ends` is set, its end objects.
+void span_node(const Scene& scene, const TriangleIndex& index, const Box3& box, const NodeLine& line, bool ends,
+               SkeletonNode& node) {
   std::vector<Vec3<R>> pts = line.family_points;
   const ExtremalLineKey& k = node.key;
   for (int i = 0; i < k.vertex_count(); ++i) pts.push_back(lift(scene.vertices[k.vertices[i]]));
@@ -90,9 +90,9 @@ void finish_node(const Scene& scene, const SceneAdjacency& adj, const TriangleIn
   }
   node.from = pts[lo];
   node.to = pts[hi];
+  if (!ends) return;
   node.ends[0] = line_first_hit(scene, index, box, node.from, -line.dir);
   node.ends[1] = line_first_hit(scene, index, box, node.to, line.dir);
-  node.valid = node_line_valid(scene, adj, index, node, line.dir);
 }
 
 double seconds_since(std::chrono::steady_clock::time_point t) {
@@ -115,6 +115,7 @@ Skeleton3D build_skeleton_3d(const Scene& scene, const SkeletonOptions& options)
   ev_opt.progress = options.progress;
   ev_opt.parallel = options.parallel;
   ev_opt.accept_pair = options.accept_ev_pair;
+  ev_opt.accept_interval = options.accept_ev_interval;
   EeeOptions eee_opt;
   eee_opt.progress = options.progress;
   eee_opt.parallel = options.parallel;
@@ -244,12 +245,30 @@ Skeleton3D build_skeleton_3d(const Scene& scene, const SkeletonOptions& options)
     std::size_t i = 0;
     for (const auto& [key, line] : lines) line_of[i++] = &line;
   }
+  // With SkeletonOptions::wanted_ends, only the nodes of wanted ends and the end nodes of wanted arcs get
+  // their validity; node lines the caller proves irrelevant get no end objects.
+  std::vector<char> needed(sk.nodes.size(), options.wanted_ends ? 0 : 1);
   {
     ProgressBar bar("skeleton: nodes", sk.nodes.size(), options.progress);
     for_each_index(sk.nodes.size(), options.parallel, 16, [&](std::size_t i) {
       const NodeLine copy = *line_of[i];  // own copies: RootNumber caches are not thread-safe
-      finish_node(scene, adj, index, box, copy, sk.nodes[i]);
+      const bool ends = !options.node_line_may_matter || options.node_line_may_matter(copy.origin, copy.dir);
+      span_node(scene, index, box, copy, ends, sk.nodes[i]);
+      if (needed[i]) sk.nodes[i].valid = node_line_valid(scene, adj, index, sk.nodes[i], copy.dir);
       bar.advance();
+    });
+  }
+  if (options.wanted_ends) {
+    for (std::size_t i = 0; i < sk.nodes.size(); ++i) needed[i] = options.wanted_ends(sk.nodes[i].ends) ? 1 : 0;
+    for (const SkeletonArc& a : sk.arcs)
+      if (options.wanted_ends(a.ends))
+        for (int n : a.nodes) needed[n] = 1;
+    std::vector<std::size_t> todo;
+    for (std::size_t i = 0; i < sk.nodes.size(); ++i)
+      if (needed[i]) todo.push_back(i);
+    for_each_index(todo.size(), options.parallel, 16, [&](std::size_t j) {
+      const NodeLine copy = *line_of[todo[j]];
+      sk.nodes[todo[j]].valid = node_line_valid(scene, adj, index, sk.nodes[todo[j]], copy.dir);
     });
   }
 

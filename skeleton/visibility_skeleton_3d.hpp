@@ -83,6 +83,15 @@ struct SkeletonOptions {
   // EV pairs to enumerate (EvOptions::accept_pair; unset: all). Arcs of rejected pairs and the nodes reached
   // only through them are then missing: for callers that need only a slice (build_pair_skeleton).
   std::function<bool(int vertex, const std::array<int, 2>& edge)> accept_ev_pair;
+  // EV free intervals to keep (EvOptions::accept_interval; unset: all), with the same caveat.
+  std::function<bool(int vertex, const std::array<int, 2>& edge, const CriticalInterval& interval)>
+      accept_ev_interval;
+  // For callers that need only the nodes and arcs whose end objects `wanted_ends` accepts, and the end nodes
+  // of those arcs (build_pair_skeleton): when set, the other nodes are not tested for validity (valid =
+  // false); nodes whose line `node_line_may_matter` rejects (given the line's point and direction; it must
+  // reject only lines that are none of those) get no end objects (-1, -1).
+  std::function<bool(const std::array<std::int64_t, 2>& ends)> wanted_ends;
+  std::function<bool(const Vec3<RootNumber>& origin, const Vec3<RootNumber>& dir)> node_line_may_matter;
 };
 
 // Input: a scene. Output: its full visibility skeleton (see the header comment). Exact. Cost: the EV and
