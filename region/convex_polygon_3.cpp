@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 
 namespace exactvis::region {
@@ -32,18 +33,51 @@ Plane3 plane_of(const Polygon3& poly) {
   throw std::invalid_argument("degenerate polygon has no plane");
 }
 
+namespace {
+// The exact sign of plane.value(x) from the plane's enclosure (computed once per clip): BoundedDouble first
+// (docs/theory.md section 1, semi-static layer), the exact value only when the bound does not decide it.
+struct PlaneEnclosure {
+  BoundedDouble nx, ny, nz, off;
+  explicit PlaneEnclosure(const Plane3& pl)
+      : nx(enclosing_interval(pl.normal.x)), ny(enclosing_interval(pl.normal.y)),
+        nz(enclosing_interval(pl.normal.z)), off(enclosing_interval(pl.offset)) {}
+  std::optional<Sign> sign_at(const RationalPoint3& x) const {
+    const BoundedDouble v = nx * BoundedDouble(enclosing_interval(x.x)) +
+                            ny * BoundedDouble(enclosing_interval(x.y)) +
+                            nz * BoundedDouble(enclosing_interval(x.z)) - off;
+    return v.certified_sign();
+  }
+};
+}  // namespace
+
 Polygon3 clip_polygon(const Polygon3& poly, const Plane3& plane) {
   Polygon3 out;
   const std::size_t n = poly.size();
   if (n == 0) return out;
-  std::vector<Exact> v(n);
-  for (std::size_t i = 0; i < n; ++i) v[i] = plane.value(poly[i]);
+  // Signs first (filtered); the exact values only at the ends of the edges that cross the plane, which are
+  // the only ones the crossing points need. The same signs and values as computing every value exactly.
+  std::vector<int> s(n);
+  std::vector<std::optional<Exact>> v(n);
+  const PlaneEnclosure enc(plane);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (const std::optional<Sign> f = enc.sign_at(poly[i])) {
+      s[i] = to_int(*f);
+    } else {
+      v[i] = plane.value(poly[i]);
+      s[i] = CGAL::sign(*v[i]);
+    }
+  }
+  auto value = [&](std::size_t i) -> const Exact& {
+    if (!v[i]) v[i] = plane.value(poly[i]);
+    return *v[i];
+  };
   for (std::size_t i = 0; i < n; ++i) {
     const std::size_t j = (i + 1) % n;
-    const int si = CGAL::sign(v[i]), sj = CGAL::sign(v[j]);
+    const int si = s[i], sj = s[j];
     if (si >= 0) out.push_back(poly[i]);
     if ((si > 0 && sj < 0) || (si < 0 && sj > 0)) {
-      const Exact t = v[i] / (v[i] - v[j]);
+      const Exact& vi = value(i);
+      const Exact t = vi / (vi - value(j));
       out.push_back(poly[i] + t * (poly[j] - poly[i]));
     }
   }

@@ -9,6 +9,8 @@
 #include <CGAL/Polygon_with_holes_2.h>
 
 #include <algorithm>
+#include <array>
+#include <optional>
 #include <set>
 #include <stdexcept>
 
@@ -18,13 +20,6 @@ namespace {
 using Polygon2 = CGAL::Polygon_2<PlanarKernel>;
 using PolygonWithHoles2 = CGAL::Polygon_with_holes_2<PlanarKernel>;
 using PolygonSet2 = CGAL::Polygon_set_2<PlanarKernel>;
-
-// The plane through a, b, c oriented so that `inside` has value > 0 (inside not on the plane).
-region::Plane3 oriented_plane(const RationalPoint3& a, const RationalPoint3& b, const RationalPoint3& c,
-                              const RationalPoint3& inside) {
-  region::Plane3 pl = region::plane_through(a, b, c);
-  return pl.value(inside) > 0 ? pl : pl.flipped();
-}
 
 Polygon2 to_polygon2(const PlaneChart& chart, const region::Polygon3& poly) {
   Polygon2 out;
@@ -52,6 +47,46 @@ Exact area_of(const PolygonWithHoles2& pwh) {
   return from_planar_ft(a);
 }
 
+// The orient3d signs of a backprojection's pre-tests, where one point may be the (rational) point p: first
+// BoundedDouble on p's enclosure (computed once per backprojection) and the exact doubles of the triangle
+// and the light corners; the exact rational orient3d (kernel/predicates) only when the bound does not
+// decide. Same signs as orient3d on the rationals.
+class PointSigns {
+ public:
+  // A point of the predicate: its BoundedDouble enclosure and its exact rational.
+  struct Arg {
+    const Vec3<BoundedDouble>* bd;
+    const RationalPoint3* q;
+  };
+  PointSigns(const Vec3<BoundedDouble>& pb, const RationalPoint3& p, const Point3 (&td)[3]) : pb_(pb), p_(p), td_(td) {
+    for (int k = 0; k < 3; ++k) tb_[k] = {BoundedDouble(td[k].x), BoundedDouble(td[k].y), BoundedDouble(td[k].z)};
+  }
+  Arg p() const { return {&pb_, &p_}; }
+  Arg t(int k) { return {&tb_[k], nullptr}; }
+  Sign orient(const Arg& a, const Arg& b, const Arg& c, const Arg& d) {
+    const Vec3<BoundedDouble>& A = *a.bd;
+    const BoundedDouble det = dot(cross(*b.bd - A, *c.bd - A), *d.bd - A);
+    if (const std::optional<Sign> s = det.certified_sign()) return *s;
+    return orient3d(exact(a), exact(b), exact(c), exact(d));
+  }
+  // The triangle's corners as rationals (converted once, on first use).
+  const std::array<RationalPoint3, 3>& rational() {
+    if (!t_) t_ = std::array<RationalPoint3, 3>{to_rational(td_[0]), to_rational(td_[1]), to_rational(td_[2])};
+    return *t_;
+  }
+
+ private:
+  const RationalPoint3& exact(const Arg& a) {
+    if (a.q) return *a.q;
+    return rational()[a.bd - &tb_[0]];
+  }
+  const Vec3<BoundedDouble>& pb_;
+  const RationalPoint3& p_;
+  const Point3 (&td_)[3];
+  Vec3<BoundedDouble> tb_[3];
+  std::optional<std::array<RationalPoint3, 3>> t_;
+};
+
 }  // namespace
 
 const char* light_class_name(LightClass c) {
@@ -73,6 +108,8 @@ Backprojection backproject_with(const Scene& scene, const std::vector<int>& ligh
                                 Candidates&& candidates) {
   Backprojection bp;
   std::set<std::int64_t> blockers;
+  const Vec3<BoundedDouble> pb{BoundedDouble(enclosing_interval(p.x)), BoundedDouble(enclosing_interval(p.y)),
+                               BoundedDouble(enclosing_interval(p.z))};
   for (std::size_t k_light = 0; k_light < light.size(); ++k_light) {
     const int li = light[k_light];
     const auto lt = region::triangle_points(scene, li);
@@ -89,6 +126,12 @@ Backprojection backproject_with(const Scene& scene, const std::vector<int>& ligh
     const Box3 box = region::enclosing_box(hull);
     std::vector<Polygon2> hidden;
     std::vector<std::int64_t> hidden_by;
+    Vec3<BoundedDouble> lb[3];
+    PointSigns::Arg light_args[3];
+    for (int j = 0; j < 3; ++j) {
+      lb[j] = {BoundedDouble(ld[j].x), BoundedDouble(ld[j].y), BoundedDouble(ld[j].z)};
+      light_args[j] = {&lb[j], &lt[j]};
+    }
     for (std::int64_t ti : candidates(k_light, box)) {
       if (ti == li) continue;
       // The light corners against T's plane: scene doubles, so the double-input filtered orient3d (exact,
@@ -99,25 +142,38 @@ Backprojection backproject_with(const Scene& scene, const std::vector<int>& ligh
                  s2 = orient3d(td[0], td[1], td[2], ld[2]);
       if (s0 == Sign::Zero && s1 == Sign::Zero && s2 == Sign::Zero)
         continue;  // T in the light's plane: the open segment (p, q) ends before it
-      const auto t = region::triangle_points(scene, ti);
-      const Sign sp = orient3d(t[0], t[1], t[2], p);
+      // The signs with p: BoundedDouble on p's enclosure (computed once) and the exact doubles of T and the
+      // light, the exact rational orient3d only where the bound does not decide (PointSigns above).
+      PointSigns ps(pb, p, td);
+      const Sign sp = ps.orient(ps.t(0), ps.t(1), ps.t(2), ps.p());
       if (sp == Sign::Zero) continue;  // p in T's plane: hides at most a segment
       // Exact sign pre-tests (filtered): the light triangle entirely on p's side of T's plane, or entirely
       // outside one of the cone's side planes, is not hidden by T.
       if (s0 == sp && s1 == sp && s2 == sp) continue;
       bool outside = false;
+      Sign inner[3];
       for (int k = 0; k < 3 && !outside; ++k) {
-        const Sign inner = orient3d(p, t[k], t[(k + 1) % 3], t[(k + 2) % 3]);
-        outside = orient3d(p, t[k], t[(k + 1) % 3], lt[0]) == -inner &&
-                  orient3d(p, t[k], t[(k + 1) % 3], lt[1]) == -inner &&
-                  orient3d(p, t[k], t[(k + 1) % 3], lt[2]) == -inner;
+        const int k1 = (k + 1) % 3, k2 = (k + 2) % 3;
+        inner[k] = ps.orient(ps.p(), ps.t(k), ps.t(k1), ps.t(k2));
+        outside = ps.orient(ps.p(), ps.t(k), ps.t(k1), light_args[0]) == -inner[k] &&
+                  ps.orient(ps.p(), ps.t(k), ps.t(k1), light_args[1]) == -inner[k] &&
+                  ps.orient(ps.p(), ps.t(k), ps.t(k1), light_args[2]) == -inner[k];
       }
       if (outside) continue;
-      region::Polygon3 poly = light_poly;
-      // Beyond T's plane (closed), inside the three planes through p and T's edges (closed).
-      poly = region::clip_polygon(poly, oriented_plane(t[0], t[1], t[2], p).flipped());
-      for (int k = 0; k < 3 && poly.size() >= 3; ++k)
-        poly = region::clip_polygon(poly, oriented_plane(p, t[k], t[(k + 1) % 3], t[(k + 2) % 3]));
+      const auto& t = ps.rational();
+      // Beyond T's plane (closed), inside the three planes through p and T's edges (closed). The side plane
+      // through p, t_k, t_k+1 has normal (t_k - p) x (t_k+1 - p) = (t_k+1 - t_k) x (p - t_k) (the same
+      // vector, computed from the small difference of two corners), oriented by inner[k], the sign of its
+      // value at t_k+2; T's plane is oriented by sp. The planes (hence the clipped polygon) are exactly those
+      // of orienting each by its value at the inner point.
+      const region::Plane3 tplane = region::plane_through(t[0], t[1], t[2]);
+      region::Polygon3 poly = region::clip_polygon(light_poly, sp == Sign::Positive ? tplane.flipped() : tplane);
+      for (int k = 0; k < 3 && poly.size() >= 3; ++k) {
+        const RationalPoint3& a = t[k];
+        const Vec3<Exact> normal = cross(t[(k + 1) % 3] - a, p - a);
+        const region::Plane3 side{normal, dot(normal, a)};
+        poly = region::clip_polygon(poly, inner[k] == Sign::Positive ? side : side.flipped());
+      }
       if (region::is_degenerate(poly)) continue;
       Polygon2 h2 = to_polygon2(part.chart, poly);
       if (h2.size() < 3 || h2.area() == 0) continue;
