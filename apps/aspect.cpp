@@ -49,8 +49,14 @@ ojson event_json(const AspectAdjacency3& a) {
   for (const AspectEvent3& e : a.events) {
     if (type.empty()) type = e.type;
     else if (type != e.type) type = "EV+EEE";
-    generators.push_back({{"type", e.type}, {"vertex", e.vertex}, {"edge", {e.edge[0], e.edge[1]}},
-                          {"triangles", e.triangles}});
+    if (e.type == "EEE")
+      generators.push_back({{"type", e.type},
+                            {"edges", {{e.edges[0][0], e.edges[0][1]}, {e.edges[1][0], e.edges[1][1]},
+                                       {e.edges[2][0], e.edges[2][1]}}},
+                            {"triangles", e.triangles}});
+    else
+      generators.push_back({{"type", e.type}, {"vertex", e.vertex}, {"edge", {e.edge[0], e.edge[1]}},
+                            {"triangles", e.triangles}});
   }
   return {{"type", type}, {"generators", generators}};
 }
@@ -206,8 +212,8 @@ int write_sphere_graph(const AspectOptions& o, const Scene& scene, const AspectG
 
 // Orthographic, a model outside the class of docs/theory.md 10.5: a closed solid whose front parts are not all
 // convex, or (`open`) a model that is not a closed solid at all, its triangles two-sided (10.10):
-// aspect/general_orthographic_aspect_graph, from the free EV arcs and exact per-direction aspects; a model
-// with a free EEE arc gets a one-line error.
+// aspect/general_orthographic_aspect_graph, from the free EV and EEE arcs and exact per-direction aspects; a
+// model with free EEE arcs outside the subset of 10.11 gets a one-line error.
 int run_outside_class_orthographic(const AspectOptions& o, const Scene& scene, const std::string& label,
                                    OutputFiles& outputs, bool open) {
   // Cost (docs/performance.md): the free arcs grow like e^3 n (0.7 CPU s for a 3 x 3 terrain of 33 edges and
@@ -376,8 +382,8 @@ const exactvis::app::CommandRegistration registration(
           "aspect", "exact aspect graph of a 3D model: regions of viewpoints with one set of visible triangles");
       sub->add_option("scene", opts->scenes, "Scene files (.obj .ply .off .stl), loaded as one scene")->required();
       auto* ort = sub->add_flag("--orthographic", opts->orthographic, "viewpoints are directions (the viewing sphere); convex models, closed solids whose front parts are convex "
-                                "(docs/theory.md 10.5), and other closed solids and open models (two-sided triangles) "
-                                "whose free event arcs are EV arcs (10.10)");
+                                "(docs/theory.md 10.5), and other closed solids and open models (two-sided triangles), "
+                                "bounded by free EV arcs (10.10) and free EEE arcs in the subset of 10.11");
       auto* per = sub->add_flag("--perspective", opts->perspective,
                                 "viewpoints are points outside the model (convex models only)");
       auto* pla = sub->add_option("--plane", opts->plane, "viewpoints on the plane z=H (H a number or num/den); convex models and closed solids whose front parts are convex (docs/theory.md 10.8)");

@@ -27,12 +27,13 @@ struct AspectRegion3 {
   Vec3<Exact> sample;
 };
 
-// One visual event: EV (a vertex and an edge, scene vertex indices). `triangles` are the triangles whose
-// visibility the event changes (for a convex model: the face in the event's plane).
+// One visual event: EV (a vertex and an edge, scene vertex indices) or EEE (three edges, `edges`). `triangles`
+// are the triangles whose visibility the event changes (for a convex model: the face in the event's plane).
 struct AspectEvent3 {
   std::string type = "EV";
   int vertex = -1;
   std::array<int, 2> edge{-1, -1};
+  std::array<std::array<int, 2>, 3> edges{};  // EEE: the three edges (vertex indices, each sorted)
   std::vector<std::int64_t> triangles;
 };
 

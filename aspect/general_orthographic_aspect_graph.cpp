@@ -3,11 +3,14 @@
 #include "aspect/aspect_regions.hpp"
 #include "aspect/direction_aspect.hpp"
 #include "aspect/direction_event_arcs.hpp"
+#include "aspect/eee_arc_insertion.hpp"
 #include "aspect/great_circle_arrangement.hpp"
+#include "kernel/rational_between.hpp"
 #include "kernel/triangle_index.hpp"
 #include "util/for_each_index.hpp"
 
 #include <algorithm>
+#include <functional>
 #include <map>
 #include <set>
 
@@ -60,6 +63,164 @@ bool on_arc(const EvArc& a, const V3& s) {
   return !(t < a.t0) && !(a.t1 < t);
 }
 
+// A cell of the split partition.
+struct Cell {
+  int dimension = 0;
+  V3 sample;
+  std::vector<int> circles;  // circles holding it
+  std::vector<int> facets;
+  int neighbour_face = -1;   // a face in whose closure it lies (cell index)
+  bool rational = true;      // false: an EEE cut point at an irrational position (no sample)
+  std::vector<int> eee;      // the free EEE arcs holding it (indices into DirectionEventArcs::arcs)
+};
+
+// Face f of the arrangement cut by its EEE sub-arcs (docs/theory.md 10.11): the sub-arcs are pairwise
+// disjoint simple curves in the open convex face, each with 0, 1 or 2 ends on its boundary. Walking the
+// boundary (counter-clockwise, the face on the left) the ends on it cut it into gaps; a chord with ends A and
+// B has on one side the gaps just after B and just before A, on the other the gaps just after A and just
+// before B; a curve with one end X on the boundary separates nothing (the gaps on both sides of X are one
+// component). So the components are the classes of gaps under these unions, each with the pieces of its gaps
+// and the sub-arcs along or inside it as facets, and a rational sample: a boundary piece's sample moved inwards
+// off every EEE cone of the face. Appends one face cell per component; returns a problem (one line) when a
+// case is outside the subset (two ends at one boundary point; a curve with no end on the boundary in a face
+// cut into several components).
+std::string split_face(const Scene& scene, const DirectionEventArcs& events, const GreatCircleArrangement& arr,
+                       const EeeArcInsertion& ins, int f,
+                       const std::vector<std::vector<int>>& chain_of_arc, const std::vector<int>& point_cell,
+                       const std::vector<int>& subarc_cell, std::vector<Cell>& cells) {
+  std::vector<int> ring;  // boundary cells in order: vertex, piece, vertex, ...
+  for (int h : arr.faces[f].halfedges) {
+    const auto& ch = chain_of_arc[h / 2];
+    if (h % 2 == 0) ring.insert(ring.end(), ch.begin(), ch.end() - 1);
+    else ring.insert(ring.end(), ch.rbegin(), ch.rend() - 1);
+  }
+  std::map<int, int> position;  // vertex cell -> index in ring
+  for (std::size_t i = 0; i < ring.size(); i += 2) position[ring[i]] = static_cast<int>(i);
+  const auto& subs = ins.subarcs_of_face[f];
+  // Sub-arc ends on the boundary, in ring order; several at one vertex (EEE arcs ending at a common rational
+  // point) by the angle of their tangents in the face's chart, from the boundary before the vertex to the one
+  // after it.
+  struct End {
+    int pos, sub, k;
+  };
+  std::vector<End> list;
+  for (std::size_t i = 0; i < subs.size(); ++i) {
+    const EeeSubArc& s = ins.subarcs[subs[i]];
+    for (int k = 0; k < 2; ++k) {
+      const auto it = position.find(point_cell[k == 0 ? s.first : s.second]);
+      if (it != position.end()) list.push_back({it->second, static_cast<int>(i), k});
+    }
+  }
+  const EeeFaceChart chart = eee_face_chart(arr, f);
+  const int n = static_cast<int>(ring.size());
+  auto tangent = [&](const End& e) {
+    const EeeSubArc& s = ins.subarcs[subs[e.sub]];
+    const EeeArcPoint& p = ins.points[e.k == 0 ? s.first : s.second];
+    Exact t;
+    root_number_rational(p.t, &t);
+    return eee_end_tangent(scene, events.arcs[s.arc], chart, t, e.k);
+  };
+  bool unordered = false;
+  std::sort(list.begin(), list.end(), [&](const End& a, const End& b) {
+    if (a.pos != b.pos) return a.pos < b.pos;
+    if (a.sub == b.sub && a.k == b.k) return false;
+    const auto x = chart_point(chart, cells[ring[a.pos]].sample);
+    auto rel = [&](int c) {
+      const auto y = chart_point(chart, cells[c].sample);
+      return std::array<Exact, 2>{y[0] - x[0], y[1] - x[1]};
+    };
+    const auto r0 = rel(ring[(a.pos + n - 1) % n]), r1 = rel(ring[(a.pos + 1) % n]);
+    const auto va = tangent(a), vb = tangent(b);
+    const int o = CGAL::sign(va[0] * vb[1] - va[1] * vb[0]);
+    if (o == 0) unordered = true;
+    return o == CGAL::sign(r0[0] * r1[1] - r0[1] * r1[0]);
+  });
+  if (unordered) return "two free EEE arcs leave a common point tangentially";
+  const int m = static_cast<int>(list.size());
+  std::vector<int> ends;
+  for (const End& e : list) ends.push_back(e.pos);
+  std::vector<std::array<int, 2>> end_of(subs.size(), {-1, -1});  // index into `list` of each end on the ring
+  for (int j = 0; j < m; ++j) end_of[list[j].sub][list[j].k] = j;
+  const int gaps = std::max(m, 1);
+  auto gap_index = [&](int j) { return j; };
+  std::vector<int> parent(gaps);
+  for (int g = 0; g < gaps; ++g) parent[g] = g;
+  std::function<int(int)> find = [&](int x) { return parent[x] == x ? x : parent[x] = find(parent[x]); };
+  auto unite = [&](int x, int y) { parent[find(x)] = find(y); };
+  for (std::size_t i = 0; i < subs.size(); ++i) {
+    const int a = end_of[i][0], b = end_of[i][1];
+    if (a >= 0 && b >= 0) {
+      const int ia = gap_index(a), ib = gap_index(b);
+      unite(ib, (ia + m - 1) % m);
+      unite(ia, (ib + m - 1) % m);
+    } else if (a >= 0 || b >= 0) {
+      const int ix = gap_index(a >= 0 ? a : b);
+      unite((ix + m - 1) % m, ix);
+    }
+  }
+  // Gap g holds the ring cells strictly after ends[g] up to ends[g + 1] (the whole ring when m == 0).
+  std::map<int, std::vector<int>> pieces_of_class;
+  for (int g = 0; g < gaps; ++g) pieces_of_class[find(g)];
+  for (int g = 0; g < gaps; ++g) {
+    const int start = m == 0 ? 0 : ends[g], stop = m == 0 ? n : (g + 1 < m ? ends[g + 1] : ends[0] + n);
+    for (int i = start; i < stop; ++i)
+      if (cells[ring[i % n]].dimension == 1) pieces_of_class[find(g)].push_back(ring[i % n]);
+  }
+  std::map<int, std::vector<int>> arcs_of_class;
+  for (std::size_t i = 0; i < subs.size(); ++i) {
+    const int a = end_of[i][0], b = end_of[i][1];
+    if (a >= 0 && b >= 0) {
+      arcs_of_class[find(gap_index(a))].push_back(subarc_cell[subs[i]]);
+      arcs_of_class[find(gap_index(b))].push_back(subarc_cell[subs[i]]);
+    } else if (a >= 0 || b >= 0) {
+      arcs_of_class[find(gap_index(a >= 0 ? a : b))].push_back(subarc_cell[subs[i]]);
+    } else {
+      if (pieces_of_class.size() > 1) return "a free EEE arc lies inside a face cut by other EEE arcs, with no end on its boundary";
+      arcs_of_class[pieces_of_class.begin()->first].push_back(subarc_cell[subs[i]]);
+    }
+  }
+  for (const auto& [cls, pieces] : pieces_of_class) {
+    if (pieces.empty()) return "a region bounded by free EEE arcs alone (a lens between two of them)";
+    Cell c{2, V3(), {}, pieces, -1, true, {}};
+    for (int a : arcs_of_class[cls]) c.facets.push_back(a);
+    bool sampled = false;
+    for (int p : pieces)
+      if (sample_off_eee_arcs(ins, arr, f, cells[p].sample, &c.sample)) {
+        sampled = true;
+        break;
+      }
+    if (!sampled) return "every boundary sample of a face lies on an EEE cone";
+    cells.push_back(std::move(c));
+  }
+  return {};
+}
+
+// A free EEE arc lying on a great circle (its three edges parallel to one plane: the cone of 10.7 degenerates
+// and the transversals' directions sweep a plane, the rulings of a hyperbolic paraboloid), handled like an EV
+// arc: the closed arc of its circle from a = o f(t0) through m = o f(t_s) to b = o f(t1) (t rational).
+struct CircleEeeArc {
+  int index = 0;  // into DirectionEventArcs::arcs
+  V3 n, a, m, b;  // n oriented so that m lies counter-clockwise between a and b
+};
+
+// The angle of x from a, counter-clockwise about n, compared: bucket 0 (x = a), 1 (below a half turn), 2 (the
+// half turn), 3 (beyond), then by orientation.
+int angle_bucket(const V3& n, const V3& a, const V3& x) {
+  const int h = CGAL::sign(dot(n, cross(a, x)));
+  if (h > 0) return 1;
+  if (h < 0) return 3;
+  return CGAL::sign(dot(a, x)) > 0 ? 0 : 2;
+}
+bool angle_less(const V3& n, const V3& a, const V3& x, const V3& y) {
+  const int bx = angle_bucket(n, a, x), by = angle_bucket(n, a, y);
+  if (bx != by) return bx < by;
+  return (bx == 1 || bx == 3) && CGAL::sign(dot(n, cross(x, y))) > 0;
+}
+bool on_circle_eee(const CircleEeeArc& c, const V3& s) {
+  if (CGAL::sign(dot(c.n, s)) != 0 || (CGAL::sign(s.x) == 0 && CGAL::sign(s.y) == 0 && CGAL::sign(s.z) == 0)) return false;
+  return !angle_less(c.n, c.a, c.b, s);
+}
+
 char sign_char(int s) { return s > 0 ? '+' : (s < 0 ? '-' : '0'); }
 
 }  // namespace
@@ -70,19 +231,6 @@ GeneralOrthographicResult general_orthographic_aspect_graph(const Scene& scene, 
   const DirectionEventArcs events = direction_event_arcs(scene);
   if (progress) progress(0.2);
   for (const auto& a : events.arcs) (a.type == DirectionEventArc::Type::EV ? out.ev_arcs : out.eee_arcs)++;
-  if (out.eee_arcs > 0) {
-    // Name the first one's generators (EV arcs come first), so that a user can see which edges cause it.
-    const auto& first = events.arcs[out.ev_arcs];
-    std::string edges;
-    for (int k = 0; k < 3; ++k)
-      edges += std::string(k == 0 ? "" : (k == 1 ? ", " : " and ")) + std::to_string(first.edges[k][0]) + "-" +
-               std::to_string(first.edges[k][1]);
-    out.problem = std::to_string(out.eee_arcs) +
-                  " free EEE event arcs (conics on the viewing sphere; the first of lines meeting the edges " + edges +
-                  ", by vertex index) bound its aspects, and the orthographic aspect graph with EEE arcs is not "
-                  "implemented yet";
-    return out;
-  }
   // Circles: the coordinate ones, then each free EV arc's plane.
   std::map<std::array<Exact, 3>, int> circle_of;
   std::vector<V3> normals;
@@ -101,6 +249,7 @@ GeneralOrthographicResult general_orthographic_aspect_graph(const Scene& scene, 
   std::vector<std::pair<int, V3>> ends;  // (circle, direction) of every free arc end
   for (std::size_t i = 0; i < events.arcs.size(); ++i) {
     const auto& a = events.arcs[i];
+    if (a.type != DirectionEventArc::Type::EV) continue;
     const V3 v = ep(scene.vertices[a.vertex]), p = ep(scene.vertices[a.edges[0][0]]),
              q = ep(scene.vertices[a.edges[0][1]]);
     EvArc e{static_cast<int>(i), p - v, q - p, cross(p - v, q - p), a.orientation, a.t0.a0(), a.t1.a0()};
@@ -109,82 +258,206 @@ GeneralOrthographicResult general_orthographic_aspect_graph(const Scene& scene, 
     arcs_on[c].push_back(e);
     for (const Exact& t : {e.t0, e.t1}) ends.push_back({c, arc_direction(scene, a, t)});
   }
+  // Free EEE arcs lying on a great circle: circles and ends like EV arcs.
+  std::vector<char> eee_on_circle(events.arcs.size(), 0);
+  std::vector<std::vector<CircleEeeArc>> ceee_on(normals.size());
+  for (std::size_t i = 0; i < events.arcs.size(); ++i) {
+    const auto& a = events.arcs[i];
+    if (a.type != DirectionEventArc::Type::EEE) continue;
+    const V3 d0 = arc_direction(scene, a, Exact(0)), d1 = arc_direction(scene, a, Exact(1)),
+             d2 = arc_direction(scene, a, Exact(2));
+    const V3 c2 = Exact(1, 2) * (d2 - Exact(2) * d1 + d0), c1 = d1 - d0 - c2;
+    V3 n = cross(d0, c1);
+    if (n == V3()) n = cross(d0, c2);
+    if (n == V3()) n = cross(c1, c2);
+    if (n == V3() || CGAL::sign(dot(n, d0)) != 0 || CGAL::sign(dot(n, c1)) != 0 || CGAL::sign(dot(n, c2)) != 0) continue;
+    Exact t0, t1;
+    if (!root_number_rational(a.t0, &t0) || !root_number_rational(a.t1, &t1)) continue;  // refused later
+    const V3 da = arc_direction(scene, a, t0), db = arc_direction(scene, a, t1),
+             dm = arc_direction(scene, a, a.sample_t);
+    if (da == V3() || db == V3() || dm == V3()) continue;
+    eee_on_circle[i] = 1;
+    const int c = add_circle(n);
+    if (static_cast<int>(ceee_on.size()) <= c) ceee_on.resize(c + 1);
+    CircleEeeArc ce{static_cast<int>(i), normals[c], da, dm, db};
+    if (angle_less(ce.n, ce.a, ce.b, ce.m)) ce.n = -ce.n;
+    ceee_on[c].push_back(ce);
+    for (const V3& d : {da, db}) ends.push_back({c, d});
+  }
+  ceee_on.resize(normals.size());
+  if (arcs_on.size() < normals.size()) arcs_on.resize(normals.size());
   out.circles = normals.size();
   const GreatCircleArrangement arr = great_circle_arrangement(normals);
   const int V = static_cast<int>(arr.vertices.size()), E = static_cast<int>(arr.arcs.size()),
             F = static_cast<int>(arr.faces.size());
 
-  // Split points: the arc ends strictly inside an arc of the arrangement (an end on two circles is a vertex).
+  // The free EEE arcs cut at the circles (aspect/eee_arc_insertion), when there are any.
+  EeeArcInsertion ins;
+  if (out.eee_arcs > 0) {
+    ins = insert_eee_arcs(scene, events, arr, normals, eee_on_circle);
+    if (!ins.ok) {
+      out.problem = std::to_string(out.eee_arcs) + " free EEE event arcs bound its aspects, and " + ins.problem;
+      return out;
+    }
+  }
+  // Split points: the arc ends strictly inside an arc of the arrangement (an end on two circles is a vertex),
+  // and the EEE arcs' cut points inside arcs; each at its position (1 - lambda) from + lambda to.
+  struct Split {
+    RootNumber lambda;
+    bool rational = true;
+    V3 d;                        // when rational
+    std::vector<int> eee_points;  // indices into ins.points
+  };
   std::vector<std::vector<int>> arcs_of_circle(normals.size());
   for (int a = 0; a < E; ++a) arcs_of_circle[arr.arcs[a].circle].push_back(a);
-  std::vector<std::vector<V3>> splits(E);
+  std::vector<std::vector<Split>> splits(E);
+  auto lambda_of = [&](int a, const V3& d) {
+    const V3 &from = arr.vertices[arr.arcs[a].from], &to = arr.vertices[arr.arcs[a].to];
+    const V3 c = cross(from, to);
+    const Exact al = dot(c, cross(d, to)), be = dot(c, cross(from, d));
+    return RootNumber(be / (al + be));
+  };
   for (const auto& [c, d] : ends)
     for (int a : arcs_of_circle[c]) {
       const V3 &from = arr.vertices[arr.arcs[a].from], &to = arr.vertices[arr.arcs[a].to];
       const V3& n = normals[c];
       if (CGAL::sign(dot(n, cross(from, d))) > 0 && CGAL::sign(dot(n, cross(d, to))) > 0) {
         bool known = false;
-        for (const V3& s : splits[a]) known |= same_direction(s, d);
-        if (!known) splits[a].push_back(d);
+        for (const Split& s : splits[a]) known |= same_direction(s.d, d);
+        if (!known) splits[a].push_back({lambda_of(a, d), true, d, {}});
         break;
       }
     }
-  // Cells: vertices (arrangement, then split points), pieces of arcs, faces.
-  struct Cell {
-    int dimension = 0;
-    V3 sample;
-    std::vector<int> circles;  // circles holding it
-    std::vector<int> facets;
-    int neighbour_face = -1;   // a face in whose closure it lies (cell index)
-  };
+  for (std::size_t i = 0; i < ins.points.size(); ++i) {
+    const EeeArcPoint& p = ins.points[i];
+    if (p.gc_arc < 0) continue;
+    bool known = false;
+    for (Split& s : splits[p.gc_arc])
+      if (s.lambda == p.lambda) {
+        s.eee_points.push_back(static_cast<int>(i));
+        known = true;
+      }
+    if (!known) splits[p.gc_arc].push_back({p.lambda, p.rational, p.direction, {static_cast<int>(i)}});
+  }
+  // Cells: vertices (arrangement, then split points), pieces of arcs, EEE cells, faces.
   std::vector<Cell> cells;
-  for (int v = 0; v < V; ++v) cells.push_back({0, arr.vertices[v], arr.vertex_circles[v], {}, -1});
-  std::vector<std::vector<int>> pieces_of_arc(E);
+  std::vector<int> point_cell(ins.points.size(), -1);
+  for (int v = 0; v < V; ++v) cells.push_back({0, arr.vertices[v], arr.vertex_circles[v], {}, -1, true, {}});
+  for (std::size_t i = 0; i < ins.points.size(); ++i)
+    if (ins.points[i].gc_vertex >= 0) {
+      point_cell[i] = ins.points[i].gc_vertex;
+      cells[ins.points[i].gc_vertex].eee.push_back(ins.points[i].arc);
+    }
+  std::vector<std::vector<int>> pieces_of_arc(E), chain_of_arc(E);
   for (int a = 0; a < E; ++a) {
     const auto& arc = arr.arcs[a];
-    const V3& n = normals[arc.circle];
     auto& sp = splits[a];
-    // Along the arc (<= a half circle) from `from`: p before q iff n . (p x q) > 0.
-    std::sort(sp.begin(), sp.end(), [&](const V3& p, const V3& q) { return CGAL::sign(dot(n, cross(p, q))) > 0; });
+    std::sort(sp.begin(), sp.end(), [](const Split& p, const Split& q) { return p.lambda < q.lambda; });
     std::vector<int> chain{arc.from};
-    for (const V3& s : sp) {
+    std::vector<RootNumber> lambdas{RootNumber(0)};
+    for (const Split& s : sp) {
       chain.push_back(static_cast<int>(cells.size()));
-      cells.push_back({0, unit_max(s), {arc.circle}, {}, -1});
+      lambdas.push_back(s.lambda);
+      Cell c{0, s.rational ? unit_max(s.d) : V3(), {arc.circle}, {}, -1, s.rational, {}};
+      for (int i : s.eee_points) {
+        point_cell[i] = chain.back();
+        c.eee.push_back(ins.points[i].arc);
+      }
+      cells.push_back(std::move(c));
     }
     chain.push_back(arc.to);
+    lambdas.push_back(RootNumber(1));
     for (std::size_t k = 0; k + 1 < chain.size(); ++k) {
-      const V3 sample = sp.empty() ? arc_sample(arr, normals, a) : unit_max(cells[chain[k]].sample + cells[chain[k + 1]].sample);
+      V3 sample;
+      if (sp.empty()) sample = arc_sample(arr, normals, a);
+      else if (cells[chain[k]].rational && cells[chain[k + 1]].rational)
+        sample = unit_max(cells[chain[k]].sample + cells[chain[k + 1]].sample);
+      else {
+        const Exact l = rational_strictly_between(lambdas[k], lambdas[k + 1]);
+        sample = unit_max((Exact(1) - l) * arr.vertices[arc.from] + l * arr.vertices[arc.to]);
+      }
       pieces_of_arc[a].push_back(static_cast<int>(cells.size()));
-      cells.push_back({1, sample, {arc.circle}, {chain[k], chain[k + 1]}, -1});
+      chain_of_arc[a].push_back(chain[k]);
+      chain_of_arc[a].push_back(static_cast<int>(cells.size()));
+      cells.push_back({1, sample, {arc.circle}, {chain[k], chain[k + 1]}, -1, true, {}});
     }
+    chain_of_arc[a].push_back(arc.to);
+  }
+  // EEE arc ends inside faces, then the sub-arcs.
+  for (std::size_t i = 0; i < ins.points.size(); ++i)
+    if (ins.points[i].circle < 0) {
+      point_cell[i] = static_cast<int>(cells.size());
+      cells.push_back({0, ins.points[i].direction, {}, {}, -1, true, {ins.points[i].arc}});
+    }
+  std::vector<int> subarc_cell(ins.subarcs.size());
+  for (std::size_t i = 0; i < ins.subarcs.size(); ++i) {
+    const EeeSubArc& s = ins.subarcs[i];
+    subarc_cell[i] = static_cast<int>(cells.size());
+    cells.push_back({1, s.sample, {}, {point_cell[s.first], point_cell[s.second]}, -1, true, {s.arc}});
   }
   const int first_face = static_cast<int>(cells.size());
   for (int f = 0; f < F; ++f) {
-    Cell c{2, face_sample(arr, f), {}, {}, -1};
-    for (int h : arr.faces[f].halfedges)
-      for (int p : pieces_of_arc[h / 2]) c.facets.push_back(p);
-    cells.push_back(std::move(c));
+    if (ins.subarcs_of_face.empty() || ins.subarcs_of_face[f].empty()) {
+      Cell c{2, face_sample(arr, f), {}, {}, -1, true, {}};
+      for (int h : arr.faces[f].halfedges)
+        for (int p : pieces_of_arc[h / 2]) c.facets.push_back(p);
+      cells.push_back(std::move(c));
+      continue;
+    }
+    if (const std::string p = split_face(scene, events, arr, ins, f, chain_of_arc, point_cell, subarc_cell, cells); !p.empty()) {
+      out.problem = std::to_string(out.eee_arcs) + " free EEE event arcs bound its aspects, and " + p;
+      return out;
+    }
   }
-  for (int f = 0; f < F; ++f)
-    for (int p : cells[first_face + f].facets) {
-      if (cells[p].neighbour_face < 0) cells[p].neighbour_face = first_face + f;
+  for (int f = first_face; f < static_cast<int>(cells.size()); ++f)
+    for (int p : cells[f].facets) {
+      if (cells[p].neighbour_face < 0) cells[p].neighbour_face = f;
       for (int v : cells[p].facets)
-        if (cells[v].neighbour_face < 0) cells[v].neighbour_face = first_face + f;
+        if (cells[v].neighbour_face < 0) cells[v].neighbour_face = f;
     }
   const int nc = static_cast<int>(cells.size());
 
   // Which cells to evaluate: faces, and the lower cells on a free arc's closure.
   std::vector<char> evaluate(nc, 0);
   for (int c = 0; c < nc; ++c) {
-    if (cells[c].dimension == 2) {
+    // With EEE arcs every cell with a rational sample is evaluated: a triangle seen edge-on from the blocked
+    // part of its plane's circle leaves the aspect there although no free arc holds it (docs/theory.md 10.11).
+    if (cells[c].dimension == 2 || (cells[c].rational && (!cells[c].eee.empty() || out.eee_arcs > 0))) {
       evaluate[c] = 1;
       continue;
     }
-    for (int k : cells[c].circles)
+    if (!cells[c].rational) continue;
+    for (int k : cells[c].circles) {
       if (k < static_cast<int>(arcs_on.size()))
         for (const EvArc& a : arcs_on[k])
           if (on_arc(a, cells[c].sample)) evaluate[c] = 1;
+      for (const CircleEeeArc& a : ceee_on[k])
+        if (on_circle_eee(a, cells[c].sample)) evaluate[c] = 1;
+    }
   }
+  // An irrational cut point of an EEE arc (on one circle, strictly inside an arrangement arc) takes the aspect
+  // of the EEE sub-arc through it, unless a free EV arc holds it too (then it is a crossing of two free arcs,
+  // outside the subset handled: its aspect would need an evaluation at an algebraic direction).
+  for (int c = 0; c < nc; ++c) {
+    if (cells[c].rational) continue;
+    for (int k : cells[c].circles)
+      if (k < static_cast<int>(arcs_on.size()))
+        for (int p = 0; p < nc; ++p)
+          if (cells[p].dimension == 1 && !cells[p].circles.empty() && cells[p].circles[0] == k &&
+              std::count(cells[p].facets.begin(), cells[p].facets.end(), c))
+            if (std::any_of(arcs_on[k].begin(), arcs_on[k].end(), [&](const EvArc& e) { return on_arc(e, cells[p].sample); }) ||
+                std::any_of(ceee_on[k].begin(), ceee_on[k].end(), [&](const CircleEeeArc& e) { return on_circle_eee(e, cells[p].sample); })) {
+              out.problem = std::to_string(out.eee_arcs) +
+                            " free EEE event arcs bound its aspects, and one crosses a free arc of a great circle at an "
+                            "irrational direction, outside the subset the orthographic aspect graph handles (docs/theory.md 10.11)";
+              return out;
+            }
+  }
+  std::vector<int> copy_from(nc, -1);
+  for (int c = 0; c < nc; ++c)
+    if (cells[c].dimension == 1 && cells[c].circles.empty())
+      for (int v : cells[c].facets)
+        if (!cells[v].rational && copy_from[v] < 0) copy_from[v] = c;
   if (progress) progress(0.3);
   const TriangleIndex index(scene);
   std::vector<std::vector<std::int64_t>> aspect(nc);
@@ -199,7 +472,7 @@ GeneralOrthographicResult general_orthographic_aspect_graph(const Scene& scene, 
   std::map<std::vector<std::int64_t>, int> aspect_id;
   std::vector<AspectCell> acells(nc);
   for (int c = 0; c < nc; ++c) {
-    const int src = evaluate[c] ? c : cells[c].neighbour_face;
+    const int src = evaluate[c] ? c : (copy_from[c] >= 0 ? copy_from[c] : cells[c].neighbour_face);
     if (!evaluate[c]) aspect[c] = aspect[src];
     acells[c].dimension = cells[c].dimension;
     acells[c].aspect = aspect_id.insert({aspect[c], static_cast<int>(aspect_id.size())}).first->second;
@@ -213,6 +486,7 @@ GeneralOrthographicResult general_orthographic_aspect_graph(const Scene& scene, 
   for (int c = 0; c < nc; ++c) ++g.cells[cells[c].dimension];
   if (with_cells)
     for (int c = 0; c < nc; ++c) {
+      if (!cells[c].rational) continue;  // no exact rational sample (its aspect is its EEE sub-arc's)
       std::string signs(normals.size(), '0');
       for (std::size_t k = 0; k < normals.size(); ++k) signs[k] = sign_char(CGAL::sign(dot(normals[k], cells[c].sample)));
       g.sampled_cells.push_back({regions.region_of[c], cells[c].dimension, cells[c].sample, std::move(signs)});
@@ -239,7 +513,6 @@ GeneralOrthographicResult general_orthographic_aspect_graph(const Scene& scene, 
     for (std::int64_t id : diff)
       for (int v : scene.triangles[index_of_id[id]].v) diff_vertices.insert(v);
     for (int k : cells[adj.lower].circles) {
-      if (k >= static_cast<int>(arcs_on.size())) continue;
       const DirectionEventArc* pick = nullptr;
       for (const EvArc& e : arcs_on[k]) {
         const auto& arc = events.arcs[e.index];
@@ -250,10 +523,44 @@ GeneralOrthographicResult general_orthographic_aspect_graph(const Scene& scene, 
                                    diff_vertices.count(pick->edges[0][1]))))
           pick = &arc;
       }
-      if (!pick) continue;
+      if (!pick) {
+        // No free arc holds it (EEE models, where every cell is evaluated): a triangle of the difference seen
+        // edge-on, its plane the circle's, named as a face circle (first vertex, opposite edge).
+        if (out.eee_arcs == 0) continue;
+        for (std::int64_t id : diff) {
+          const auto& t = scene.triangles[index_of_id[id]];
+          const V3 p0 = ep(scene.corner(t, 0));
+          const V3 n = cross(ep(scene.corner(t, 1)) - p0, ep(scene.corner(t, 2)) - p0);
+          if (!(circle_key(n) == normals[k])) continue;
+          AspectEvent3 ev;
+          ev.vertex = t.v[0];
+          ev.edge = {std::min(t.v[1], t.v[2]), std::max(t.v[1], t.v[2])};
+          ev.triangles = diff;
+          a.events.push_back(std::move(ev));
+          break;
+        }
+        continue;
+      }
       AspectEvent3 ev;
       ev.vertex = pick->vertex;
       ev.edge = pick->edges[0];
+      ev.triangles = diff;
+      a.events.push_back(std::move(ev));
+    }
+    for (int k : cells[adj.lower].circles)
+      for (const CircleEeeArc& ce : ceee_on[k])
+        if (cells[adj.lower].rational && on_circle_eee(ce, cells[adj.lower].sample)) {
+          AspectEvent3 ev;
+          ev.type = "EEE";
+          ev.edges = events.arcs[ce.index].edges;
+          ev.triangles = diff;
+          a.events.push_back(std::move(ev));
+          break;
+        }
+    for (int e : cells[adj.lower].eee) {
+      AspectEvent3 ev;
+      ev.type = "EEE";
+      ev.edges = events.arcs[e].edges;
       ev.triangles = diff;
       a.events.push_back(std::move(ev));
     }

@@ -10,8 +10,10 @@
 // or disjoint from all of them (a cell's interior meets no end). Faces (open, off every circle) and cells
 // off every free arc have one aspect on a neighbourhood, so only faces and the cells on free arcs are
 // evaluated, by aspect/direction_aspect at an exact rational sample (the other cells take a neighbouring
-// face's aspect); aspect/aspect_regions merges cells into regions. Models with a free EEE arc (a conic) are
-// refused: their arrangement is not implemented.
+// face's aspect); aspect/aspect_regions merges cells into regions. Free EEE arcs (conics, theory §10.11) are
+// cut at the circles (aspect/eee_arc_insertion) and split the faces they cross; EEE arcs lying on a great circle
+// (three edges parallel to one plane) are handled like EV arcs. Models whose EEE arcs fall outside the subset
+// of §10.11 are refused with one line.
 #include "aspect/aspect_graph_3d.hpp"
 #include "kernel/scene.hpp"
 
@@ -29,10 +31,11 @@ struct GeneralOrthographicResult {
 
 // Input: a model whose triangles meet only in shared corners and edges. Output: the orthographic aspect graph
 // (regions with exact samples; adjacency with one EV event per circle holding the lower cell, a free arc
-// through it; every cell with its sample and sign vector in `sampled_cells` when `with_cells`), or ok = false
-// when a free EEE arc exists. Cost: the free arcs (aspect/direction_event_arcs: O(v e n log n) EV, O(e^3 n^2) EEE), the O(m^2) cells
+// through it, and one EEE event per free EEE arc holding it; every cell with a rational sample, its sample and
+// sign vector in `sampled_cells` when `with_cells`), or ok = false when a free EEE arc is outside the subset. Cost: the free arcs (aspect/direction_event_arcs: O(v e n log n) EV, O(e^3 n^2) EEE), the O(m^2) cells
 // of m circles, and one exact per-direction aspect (O(n) Boolean operations on O(n) polygons) per face and
-// per cell on a free arc, on all cores. `progress` (optional) receives the fraction done.
+// per cell on a free arc (with EEE arcs: per cell with a rational sample), on all cores. `progress` (optional)
+// receives the fraction done.
 GeneralOrthographicResult general_orthographic_aspect_graph(const Scene& scene, void (*progress)(double) = nullptr,
                                                             bool with_cells = true);
 

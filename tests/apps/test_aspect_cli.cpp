@@ -188,7 +188,7 @@ TEST(AspectCli, OrthographicNonConvexModels) {
   EXPECT_GT(fs::file_size(d / "t.vtp"), 1000u);
   {
     // Three disjoint tetrahedra with pairwise skew edges met by the line x = y = 0: a free EEE family, so the
-    // general path refuses the model with one line (docs/theory.md 10.11).
+    // general path refuses the model with one line: two of its EEE arcs meet (outside the subset of docs/theory.md 10.11).
     std::ofstream out(d / "skew.obj");
     const double v[12][3] = {{-1, 0, 0}, {1, 0, 0}, {0, -3, 0}, {0, -1, -1}, {0, -1, 1}, {0, 1, 1},
                              {3, 0, 1},  {1, 0, 1.5}, {-1, -1, 2}, {1, 1, 2}, {2, -2, 2}, {1, -1, 3}};
