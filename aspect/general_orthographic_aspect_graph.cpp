@@ -417,24 +417,11 @@ GeneralOrthographicResult general_orthographic_aspect_graph(const Scene& scene, 
     }
   const int nc = static_cast<int>(cells.size());
 
-  // Which cells to evaluate: faces, and the lower cells on a free arc's closure.
+  // Which cells to evaluate: every cell with a rational sample (faces and lower cells alike). A triangle seen
+  // edge-on from the blocked part of its plane's circle leaves the aspect there although no free arc holds it
+  // (docs/theory.md 10.11), so a lower cell's aspect is not always a neighbouring face's.
   std::vector<char> evaluate(nc, 0);
-  for (int c = 0; c < nc; ++c) {
-    // With EEE arcs every cell with a rational sample is evaluated: a triangle seen edge-on from the blocked
-    // part of its plane's circle leaves the aspect there although no free arc holds it (docs/theory.md 10.11).
-    if (cells[c].dimension == 2 || (cells[c].rational && (!cells[c].eee.empty() || out.eee_arcs > 0))) {
-      evaluate[c] = 1;
-      continue;
-    }
-    if (!cells[c].rational) continue;
-    for (int k : cells[c].circles) {
-      if (k < static_cast<int>(arcs_on.size()))
-        for (const EvArc& a : arcs_on[k])
-          if (on_arc(a, cells[c].sample)) evaluate[c] = 1;
-      for (const CircleEeeArc& a : ceee_on[k])
-        if (on_circle_eee(a, cells[c].sample)) evaluate[c] = 1;
-    }
-  }
+  for (int c = 0; c < nc; ++c) evaluate[c] = cells[c].dimension == 2 || cells[c].rational;
   // An irrational cut point of an EEE arc (on one circle, strictly inside an arrangement arc) takes the aspect
   // of the EEE sub-arc through it, unless a free EV arc holds it too (then it is a crossing of two free arcs,
   // outside the subset handled: its aspect would need an evaluation at an algebraic direction).
@@ -524,9 +511,8 @@ GeneralOrthographicResult general_orthographic_aspect_graph(const Scene& scene, 
           pick = &arc;
       }
       if (!pick) {
-        // No free arc holds it (EEE models, where every cell is evaluated): a triangle of the difference seen
-        // edge-on, its plane the circle's, named as a face circle (first vertex, opposite edge).
-        if (out.eee_arcs == 0) continue;
+        // No free arc holds it: a triangle of the difference seen edge-on, its plane the circle's, named as a
+        // face circle (first vertex, opposite edge).
         for (std::int64_t id : diff) {
           const auto& t = scene.triangles[index_of_id[id]];
           const V3 p0 = ep(scene.corner(t, 0));

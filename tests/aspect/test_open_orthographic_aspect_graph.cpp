@@ -122,6 +122,30 @@ TEST(OpenOrthographicAspectGraph, TerrainPatch) {
   check_against_oracle(s, r.graph, 36, 120);
 }
 
+// A terrain patch (the same grid, other heights) with lower cells off every free arc whose aspect is not a
+// neighbouring face's: on part of a triangle's plane circle the triangle is edge-on (so it leaves the aspect)
+// while its EV lines there are blocked, and no free arc lies on that part (docs/theory.md 10.11 "Aspects").
+// Taking a face's aspect for such cells (the rule 10.10 had) puts one cell in the wrong region here; every
+// rational cell is now evaluated, and the oracle checks every cell's sample.
+TEST(OpenOrthographicAspectGraph, TerrainPatchWithEdgeOnCellsOffTheFreeArcs) {
+  const double h[3][3] = {{0, 0, 0}, {1, 0.5, 1}, {1, 0.5, 0}};
+  std::vector<Point3> v;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) v.push_back({double(i), double(j), h[i][j]});
+  std::vector<std::array<int, 3>> t;
+  for (int i = 0; i < 2; ++i)
+    for (int j = 0; j < 2; ++j) {
+      const int a = 3 * i + j, b = a + 3;
+      t.push_back({a, b, b + 1});
+      t.push_back({a, b + 1, a + 1});
+    }
+  const Scene s = make_scene(v, t);
+  const auto r = open_graph(s);
+  EXPECT_EQ(r.eee_arcs, 0u);
+  EXPECT_EQ(r.graph.regions.size(), 115u);
+  check_against_oracle(s, r.graph, 37, 60);
+}
+
 // The cube with one triangle reversed: closed but inconsistently oriented, so not a closed solid for
 // closed_solid_fronts; taken with two-sided triangles, it has the cube's 26 regions (the inner sides are never
 // seen from outside).
