@@ -126,6 +126,7 @@ Backprojection backproject_with(const Scene& scene, const std::vector<int>& ligh
     const Box3 box = region::enclosing_box(hull);
     std::vector<Polygon2> hidden;
     std::vector<std::int64_t> hidden_by;
+    bool covered = false;  // one hidden polygon is the whole triangle (then it is the only one kept)
     Vec3<BoundedDouble> lb[3];
     PointSigns::Arg light_args[3];
     for (int j = 0; j < 3; ++j) {
@@ -177,10 +178,14 @@ Backprojection backproject_with(const Scene& scene, const std::vector<int>& ligh
       if (region::is_degenerate(poly)) continue;
       Polygon2 h2 = to_polygon2(part.chart, poly);
       if (h2.size() < 3 || h2.area() == 0) continue;
-      // Fast path: one cone covering the whole light triangle (the hidden polygon is a subset of the
-      // triangle, so equal area means equal sets). It alone is the proof.
-      const bool covers = from_planar_ft(h2.area()) == part.area_2d;
+      // Fast path: one cone covering the whole light triangle. The hidden polygon is a convex subset of the
+      // triangle, so it is the whole triangle iff it holds the three corners, iff the three corners are among
+      // its vertices (each clip keeps a vertex on its closed side). It alone is the proof.
+      const bool covers = std::all_of(lt.begin(), lt.end(), [&](const RationalPoint3& c) {
+        return std::find(poly.begin(), poly.end(), c) != poly.end();
+      });
       if (covers) {
+        covered = true;
         hidden.clear();
         hidden_by.clear();
       }
@@ -188,7 +193,7 @@ Backprojection backproject_with(const Scene& scene, const std::vector<int>& ligh
       hidden_by.push_back(scene.triangles[ti].id);
       if (covers) break;
     }
-    if (hidden.size() == 1 && from_planar_ft(hidden.front().area()) == part.area_2d) {
+    if (covered) {
       part.visible_area_2d = 0;
       blockers.insert(hidden_by.front());
     } else if (hidden.empty()) {
