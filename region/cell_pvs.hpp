@@ -69,8 +69,9 @@ struct PvsOptions {
   int box_rays = 32;        // Embree rays per BVH node to its triangles: one reaching the subtree skips the
                             // node's (exact) hidden-box test
   int min_cull = 16;        // hidden-box tests only for nodes of at least this many triangles
-  bool merge_coplanar = true;  // hidden-box tests subtract coplanar partner triangles as one quadrilateral
-                               // occluder (region/coplanar_partners.hpp; the same line sets, §5.8)
+  bool merge_coplanar = true;  // hidden-box tests and triangle queries subtract coplanar partner triangles as
+                               // one quadrilateral occluder (region/coplanar_partners.hpp; the same line sets,
+                               // §5.8; witnesses found by the CSG may differ from those without)
   int box_splits_per_triangle = 0;   // > 0: a node's hidden-box test gives up after this many CSG splits per
                                       // triangle of the node, and the node is descended (sound, docs/theory.md
                                       // §5.8); 0: no limit

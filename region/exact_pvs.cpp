@@ -90,7 +90,10 @@ CellPvs exact_cell_pvs(const PvsContext& context, const RationalBox3& cell, cons
   const Scene& scene = context.scene();
   const std::size_t n = scene.triangles.size();
   // Shaft occluders are gathered through the hierarchy (region/hierarchy_candidates.hpp): same answers.
-  const CandidateFinder finder = hierarchy_candidates(context.index(), scene, context.bvh());
+  // With merge_coplanar, coplanar partner triangles are one quadrilateral occluder in the queries too.
+  const CandidateFinder finder = options.merge_coplanar
+                                     ? CandidateFinder(HierarchyCandidates{context.index(), &scene, &context.bvh(), {}, &context.coplanar_partners()})
+                                     : hierarchy_candidates(context.index(), scene, context.bvh());
   const Box3 approx = approximate_box(cell);
   std::vector<TriangleAnswer> answers(n);
   std::atomic<std::int64_t> decided{0};
