@@ -42,6 +42,8 @@ class PvsContext {
   const ExtrudedScene& extruded() const;
   // The scene's closed convex solids (region/convex_occluder.hpp), computed on first use like extruded().
   const std::vector<ConvexSolid>& solids() const;
+  // The scene's coplanar partner triangles (region/coplanar_partners.hpp), computed on first use like solids().
+  const std::vector<std::int64_t>& coplanar_partners() const;
 
  private:
   const Scene& scene_;
@@ -50,9 +52,10 @@ class PvsContext {
   TriangleBvh bvh_;
   double diagonal_ = 0;
   struct Lazy {
-    std::once_flag once, solids_once;
+    std::once_flag once, solids_once, partners_once;
     ExtrudedScene extruded;
     std::vector<ConvexSolid> solids;
+    std::vector<std::int64_t> partners;
   };
   std::unique_ptr<Lazy> lazy_ = std::make_unique<Lazy>();
 };
@@ -66,6 +69,12 @@ struct PvsOptions {
   int box_rays = 32;        // Embree rays per BVH node to its triangles: one reaching the subtree skips the
                             // node's (exact) hidden-box test
   int min_cull = 16;        // hidden-box tests only for nodes of at least this many triangles
+  bool merge_coplanar = true;  // hidden-box tests and triangle queries subtract coplanar partner triangles as
+                               // one quadrilateral occluder (region/coplanar_partners.hpp; the same line sets,
+                               // §5.8; witnesses found by the CSG may differ from those without)
+  int box_splits_per_triangle = 0;   // > 0: a node's hidden-box test gives up after this many CSG splits per
+                                      // triangle of the node, and the node is descended (sound, docs/theory.md
+                                      // §5.8); 0: no limit
   bool occluder_proofs = true;  // method `exact`: try the single wall / convex solid proofs of method
                                 // `conservative` (region/single_occluder_culling.hpp) before the line-space tests
   int virtual_occluders = 32;   // method `exact` with the hierarchy: at most this many boxes proved hidden are
@@ -93,6 +102,7 @@ struct CellPvsStats {
   std::int64_t culled_by_occluders = 0;  // of those, by one wall or one convex solid (not in JSON files)
   std::int64_t boxes_tested = 0;       // exact hidden-box tests run
   std::int64_t boxes_culled = 0;       // boxes proved hidden
+  std::int64_t boxes_given_up = 0;     // box tests that spent their split budget (descended; not in JSON files)
   std::int64_t culled_by_virtual = 0;  // triangles culled by a virtual occluder (a box proved hidden before;
                                        // not in JSON files)
   std::int64_t virtual_occluders = 0;  // boxes registered as virtual occluders (before the cap; not in JSON)

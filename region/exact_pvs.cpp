@@ -90,7 +90,10 @@ CellPvs exact_cell_pvs(const PvsContext& context, const RationalBox3& cell, cons
   const Scene& scene = context.scene();
   const std::size_t n = scene.triangles.size();
   // Shaft occluders are gathered through the hierarchy (region/hierarchy_candidates.hpp): same answers.
-  const CandidateFinder finder = hierarchy_candidates(context.index(), scene, context.bvh());
+  // With merge_coplanar, coplanar partner triangles are one quadrilateral occluder in the queries too.
+  const CandidateFinder finder = options.merge_coplanar
+                                     ? CandidateFinder(HierarchyCandidates{context.index(), &scene, &context.bvh(), {}, &context.coplanar_partners()})
+                                     : hierarchy_candidates(context.index(), scene, context.bvh());
   const Box3 approx = approximate_box(cell);
   std::vector<TriangleAnswer> answers(n);
   std::atomic<std::int64_t> decided{0};
@@ -140,7 +143,7 @@ CellPvs exact_cell_pvs(const PvsContext& context, const RationalBox3& cell, cons
   std::vector<char> culled(n, 0);
   std::mutex box_stats_mutex;
   VisibilityStats box_stats;
-  std::int64_t boxes_tested = 0, boxes_culled = 0;
+  std::int64_t boxes_tested = 0, boxes_culled = 0, boxes_given_up = 0;
   auto box_reached_by_rays = [&](const BvhNode& node, std::mt19937_64& rng) {
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     for (int r = 0; r < options.box_rays; ++r) {
@@ -176,15 +179,21 @@ CellPvs exact_cell_pvs(const PvsContext& context, const RationalBox3& cell, cons
     const HierarchyCandidates outside{context.index(), &scene, &bvh, [&bvh, &node](std::int64_t t) {
                                         const int pos = bvh.position[t];
                                         return pos >= node.begin && pos < node.end;
-                                      }};
+                                      },
+                                      options.merge_coplanar ? &context.coplanar_partners() : nullptr};
     VisibilityStats stats;
+    VisibilityOptions box_options = options.query;
+    box_options.split_budget = static_cast<std::int64_t>(std::max(0, options.box_splits_per_triangle)) *
+                               (node.end - node.begin);
+    bool gave_up = false;
     const bool hidden =
-        !box_may_be_visible(scene, outside, enclosing_box(corners), cell, node.box, options.query, stats);
+        !box_may_be_visible(scene, outside, enclosing_box(corners), cell, node.box, box_options, stats, &gave_up);
     stats.exact_evaluations = 0;
     std::lock_guard lock(box_stats_mutex);
     accumulate(box_stats, stats);
     ++boxes_tested;
     boxes_culled += hidden ? 1 : 0;
+    boxes_given_up += gave_up ? 1 : 0;
     return hidden;
   };
   auto cull = [&](const BvhNode& node, char how) {
@@ -283,6 +292,7 @@ CellPvs exact_cell_pvs(const PvsContext& context, const RationalBox3& cell, cons
     for (std::size_t i = 0; i < n; ++i) out.stats.neighbour_tries += neighbour[i] && !culled[i] ? 1 : 0;
   out.stats.boxes_tested = boxes_tested;
   out.stats.boxes_culled = boxes_culled;
+  out.stats.boxes_given_up = boxes_given_up;
   out.stats.virtual_occluders = dark.added();
   out.stats.virtual_tests = dark.exact_tests();
   accumulate(out.stats.query, box_stats);

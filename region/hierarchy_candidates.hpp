@@ -27,6 +27,9 @@ struct HierarchyCandidates {
   const Scene* scene = nullptr;     // the scene `bvh` was built on; must outlive this
   const TriangleBvh* bvh = nullptr;  // must outlive this
   std::function<bool(std::int64_t)> excluded;  // may be empty; triangles it holds for are never returned
+  // May be null. Else the scene's coplanar partners (region/coplanar_partners.hpp): the stabbing-pair queries
+  // through this finder subtract each pair of whole partner occluders as one quadrilateral (the same line set).
+  const std::vector<std::int64_t>* partners = nullptr;
 
   // index.candidates_in_box(box) without the excluded triangles, in increasing order.
   std::vector<std::int64_t> operator()(const Box3& box) const;

@@ -48,6 +48,11 @@ class PairQuery {
     if (!first.test.has_real_lines) return std::nullopt;
     std::vector<Piece> stack{std::move(first)};
     while (!stack.empty()) {
+      // The budget is checked between occluders: the overshoot is at most one occluder's splits.
+      if (options_.split_budget > 0 && stats_.splits >= options_.split_budget) {
+        gave_up_ = true;
+        return std::nullopt;
+      }
       stats_.cones_alive_max = std::max<std::int64_t>(stats_.cones_alive_max, static_cast<std::int64_t>(stack.size()));
       Piece piece = std::move(stack.back());
       stack.pop_back();
@@ -150,7 +155,10 @@ class PairQuery {
       const Point3 p = weighted_point_approx(src, ws), q = weighted_point_approx(dst, wt);
       bool free = true;
       for (auto& occ : occluders_)
-        if (open_segment_meets_closed_triangle(p, q, occ.corners_d[0], occ.corners_d[1], occ.corners_d[2])) {
+        if (open_segment_meets_closed_triangle(p, q, occ.corners_d[0], occ.corners_d[1], occ.corners_d[2]) ||
+            (occ.partner >= 0 && open_segment_meets_closed_triangle(p, q, occ.partner_corners_d[0],
+                                                                    occ.partner_corners_d[1],
+                                                                    occ.partner_corners_d[2]))) {
           ++occ.blocked_samples;
           free = false;
         }
@@ -168,6 +176,9 @@ class PairQuery {
   std::mt19937_64 rng_;
   std::vector<ShaftOccluder> occluders_;
   std::vector<bool> effective_;
+
+ public:
+  bool gave_up_ = false;  // the split budget ran out (run() returned no witness without a proof)
 };
 
 }  // namespace
@@ -180,6 +191,7 @@ PairVisibility pair_visibility(const Scene& scene, const std::vector<std::int64_
       [&](const RationalPoint3& p, const RationalPoint3& q) { return segment_is_free(scene, candidates, p, q, target); },
       static_cast<std::uint64_t>(target), pair, options, out.stats);
   out.witness = query.run();
+  out.gave_up = query.gave_up_;
   return out;
 }
 
@@ -190,9 +202,11 @@ PairVisibility pair_visibility(const Scene& scene, const HierarchyCandidates& fi
   auto is_free = [&](const RationalPoint3& p, const RationalPoint3& q) {
     return segment_is_free(scene, finder, box, p, q, target);
   };
-  PairQuery query(shaft_occluders(scene, finder, box, target, pair), is_free, static_cast<std::uint64_t>(target), pair,
-                  options, out.stats);
+  std::vector<ShaftOccluder> occluders = shaft_occluders(scene, finder, box, target, pair);
+  if (finder.partners) merge_coplanar_pairs(occluders, *finder.partners);
+  PairQuery query(std::move(occluders), is_free, static_cast<std::uint64_t>(target), pair, options, out.stats);
   out.witness = query.run();
+  out.gave_up = query.gave_up_;
   return out;
 }
 
@@ -204,6 +218,7 @@ PairVisibility pair_visibility(const std::vector<std::array<RationalPoint3, 3>>&
       [&](const RationalPoint3& p, const RationalPoint3& q) { return segment_is_free(occluders, p, q); }, stream,
       pair, options, out.stats);
   out.witness = query.run();
+  out.gave_up = query.gave_up_;
   return out;
 }
 

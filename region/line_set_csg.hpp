@@ -22,12 +22,14 @@ struct PairVisibility {
   std::optional<Witness> witness;  // a free segment from relint S' to relint T', exactly re-checked; none:
                                    // the pair carries no set of free segments of positive measure
   VisibilityStats stats;           // this pair's counters (exact_evaluations not counted here)
+  bool gave_up = false;            // options.split_budget was reached first: neither a witness nor a proof
+                                   // (witness is then empty and means nothing)
 };
 
 // Input: the scene, the candidate occluders of the whole query (indices into Scene::triangles), the target
 // triangle's index, one of its stabbing pairs, and the options (samples, seed). Exact; deterministic for a
 // given seed. Cost: the samples, then the CSG (exponential in the number of effective occluders in the worst
-// case, docs/performance.md).
+// case, docs/performance.md), at most about options.split_budget splits when that is set.
 PairVisibility pair_visibility(const Scene& scene, const std::vector<std::int64_t>& candidates, std::int64_t target,
                                const StabbingPair& pair, const VisibilityOptions& options);
 

@@ -268,6 +268,7 @@ std::vector<ShaftOccluder> occluders_among(const Scene& scene, const std::vector
     if (occ) {
       occ->triangle = idx;
       occ->corners_d = c;
+      occ->whole = inside_wedge;
       out.push_back(std::move(*occ));
     }
   }
@@ -301,6 +302,63 @@ std::vector<ShaftOccluder> shaft_occluders(const Scene& scene, const HierarchyCa
     return false;
   };
   return occluders_among(scene, finder.pruned_with(box, outside), target, planes, pair);
+}
+
+void merge_coplanar_pairs(std::vector<ShaftOccluder>& occluders, const std::vector<std::int64_t>& partner) {
+  if (occluders.size() < 2) return;
+  std::vector<std::pair<std::int64_t, std::size_t>> whole;  // (triangle, position), sorted by triangle
+  for (std::size_t i = 0; i < occluders.size(); ++i)
+    if (occluders[i].whole && occluders[i].partner < 0 && occluders[i].edges.size() == 3)
+      whole.emplace_back(occluders[i].triangle, i);
+  if (whole.size() < 2) return;
+  std::sort(whole.begin(), whole.end());
+  std::vector<char> drop(occluders.size(), 0);
+  for (const auto& [t, i] : whole) {
+    if (drop[i] || occluders[i].partner >= 0 || t < 0 || static_cast<std::size_t>(t) >= partner.size()) continue;
+    const std::int64_t o = partner[static_cast<std::size_t>(t)];
+    if (o < 0) continue;
+    const auto it = std::lower_bound(whole.begin(), whole.end(), std::make_pair(o, std::size_t{0}));
+    if (it == whole.end() || it->first != o) continue;
+    const std::size_t j = it->second;
+    if (drop[j] || occluders[j].partner >= 0) continue;
+    ShaftOccluder& a = occluders[i];
+    ShaftOccluder& b = occluders[j];
+    const std::size_t first = std::min(i, j), second = std::max(i, j);
+    // The shared edge: a's corners k, k+1 are b's corners m+1, m (one loop orientation) or m, m+1 (opposite).
+    bool merged = false;
+    for (std::size_t k = 0; k < 3 && !merged; ++k)
+      for (std::size_t m = 0; m < 3 && !merged; ++m) {
+        const Point3 &a0 = a.corners_d[k], &a1 = a.corners_d[(k + 1) % 3];
+        const Point3 &b0 = b.corners_d[m], &b1 = b.corners_d[(m + 1) % 3];
+        std::vector<ConeVector6> edges{a.edges[(k + 1) % 3], a.edges[(k + 2) % 3]};
+        if (b0 == a1 && b1 == a0) {
+          edges.push_back(b.edges[(m + 1) % 3]);
+          edges.push_back(b.edges[(m + 2) % 3]);
+        } else if (b0 == a0 && b1 == a1) {  // b runs the other way round: its loop reversed
+          edges.push_back(b.edges[(m + 2) % 3].negated());
+          edges.push_back(b.edges[(m + 1) % 3].negated());
+        } else {
+          continue;
+        }
+        ShaftOccluder q;
+        q.triangle = a.triangle;
+        q.corners_d = a.corners_d;
+        q.whole = false;
+        q.partner = b.triangle;
+        q.partner_corners_d = b.corners_d;
+        q.edges = std::move(edges);
+        occluders[first] = std::move(q);
+        drop[second] = 1;
+        merged = true;
+      }
+  }
+  std::size_t w = 0;
+  for (std::size_t i = 0; i < occluders.size(); ++i)
+    if (!drop[i]) {
+      if (w != i) occluders[w] = std::move(occluders[i]);
+      ++w;
+    }
+  occluders.resize(w);
 }
 
 std::vector<ShaftOccluder> shaft_occluders(const std::vector<std::array<RationalPoint3, 3>>& triangles,

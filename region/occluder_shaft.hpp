@@ -18,7 +18,20 @@ struct ShaftOccluder {
   std::array<Point3, 3> corners_d;  // the triangle's corners as doubles (exactly the input for scene triangles)
   std::vector<ConeVector6> edges;  // functionals of the clipped polygon's edges, in loop order
   int blocked_samples = 0;     // sample segments it blocked (orders the CSG; set by the caller)
+  bool whole = false;          // the whole triangle, unclipped (the clipping shortcut): edges[i] is the line from
+                               // corners_d[i] to corners_d[i + 1]
+  std::int64_t partner = -1;   // merged with this coplanar triangle into one convex quadrilateral
+                               // (merge_coplanar_pairs): edges are then the quadrilateral's four
+  std::array<Point3, 3> partner_corners_d{};  // the partner's corners (for sampling)
 };
+
+// Merges each pair of whole occluders that are coplanar partners (partner[a] == b, region/coplanar_partners.hpp)
+// into one occluder, the convex quadrilateral a ∪ b, at the position of the first of them (the order of the
+// others kept): its four edges are the two triangles' edges other than the shared one, oriented along one loop.
+// The lines meeting the closed quadrilateral are those meeting one of the two closed triangles, so the CSG
+// subtracts the same line set (docs/theory.md §5.8). Exact (functionals are primitive integer vectors: the
+// shared edge's are equal or opposite).
+void merge_coplanar_pairs(std::vector<ShaftOccluder>& occluders, const std::vector<std::int64_t>& partner);
 
 // Planes through an edge of one polygon and a vertex of the other that support conv(S' u T'), plus the two
 // polygon planes; each oriented so the hull is on the side value >= 0. Exact.

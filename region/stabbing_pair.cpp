@@ -23,9 +23,12 @@ void add_oriented_edges(const Polygon3& poly, const Vec3<Exact>& dir, std::vecto
 }  // namespace
 
 std::vector<StabbingPair> stabbing_pairs(const Polygon3& source, const std::array<RationalPoint3, 3>& target) {
+  return stabbing_pairs(source, Polygon3{target[0], target[1], target[2]});
+}
+
+std::vector<StabbingPair> stabbing_pairs(const Polygon3& source, const Polygon3& tri) {
   std::vector<StabbingPair> pairs;
   if (is_degenerate(source)) return pairs;
-  const Polygon3 tri{target[0], target[1], target[2]};
   if (is_degenerate(tri)) return pairs;
   const Plane3 ps = plane_of(source);
   const Plane3 pt = plane_of(tri);

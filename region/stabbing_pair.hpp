@@ -20,6 +20,12 @@ struct StabbingPair {
   std::vector<PluckerLine<Exact>> edge_lines;   // oriented edges of S' and T': stabbers have side(x, e) > 0
 };
 
+// The pairs of a source polygon and a target triangle (as the polygon overload with a triangle target).
 std::vector<StabbingPair> stabbing_pairs(const Polygon3& source, const std::array<RationalPoint3, 3>& target);
+
+// The same for a convex target polygon of positive area (e.g. a face of a box, docs/theory.md §5.8): the
+// construction and its properties above hold for any convex polygon, not only triangles. An empty list when
+// either polygon is degenerate.
+std::vector<StabbingPair> stabbing_pairs(const Polygon3& source, const Polygon3& target);
 
 }  // namespace exactvis::region

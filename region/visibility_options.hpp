@@ -9,6 +9,9 @@ struct VisibilityOptions {
   std::uint64_t seed = 1;       // for sampling (results do not depend on it, only the witness may)
   bool round_witness = true;    // report the witness with double coordinates when that rounding stays a
                                 // valid witness (re-checked exactly), else with exact rationals
+  std::int64_t split_budget = 0;  // > 0: the CSG of one stabbing pair gives up (PairVisibility::gave_up, no
+                                  // answer) once it has made this many splits; 0: no limit. Only callers for
+                                  // whom "no answer" is sound may set it (the hidden-box test, §5.8).
 };
 
 struct VisibilityStats {

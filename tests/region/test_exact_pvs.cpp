@@ -226,6 +226,40 @@ TEST(ExactPvs, HierarchyNeverCullsTheTrianglesSeenThroughATinyAperture) {
   EXPECT_GT(seen_inside, 0);
 }
 
+TEST(ExactPvs, BoxSplitBudgetNeverCullsWhatATinyApertureShows) {
+  // Pinhole rooms, every node tested exactly, with small split budgets per triangle: tests that give up are
+  // descended, so the visible set must be the per-triangle answer for every budget, the witnesses must be those
+  // of the run without a budget, and the budgets must make some tests give up.
+  std::int64_t given_up = 0;
+  for (unsigned seed = 20; seed < 24; ++seed) {
+    const Scene scene = pvs_test::pinhole_room(0.03 + 0.04 * (seed % 3), 40, seed);
+    const PvsContext context(scene);
+    const int s = static_cast<int>(seed);
+    const RationalBox3 cell = box(-4 - s % 3, 1 + s % 5, 2, -3 - s % 3, 3 + s % 5, 7);
+    PvsOptions flat;
+    flat.hierarchy = false;
+    flat.occluder_proofs = false;
+    const CellPvs reference = exact_cell_pvs(context, cell, flat);
+    const CellPvs unlimited = exact_cell_pvs(context, cell, aggressive_hierarchy());
+    for (const int budget : {1, 5, 30}) {
+      PvsOptions o = aggressive_hierarchy();
+      o.box_splits_per_triangle = budget;
+      const CellPvs tree = exact_cell_pvs(context, cell, o);
+      given_up += tree.stats.boxes_given_up;
+      ASSERT_EQ(tree.visible.size(), reference.visible.size()) << "seed " << seed << " budget " << budget;
+      for (std::size_t k = 0; k < tree.visible.size(); ++k) {
+        EXPECT_EQ(tree.visible[k].index, reference.visible[k].index) << "seed " << seed;
+        ASSERT_TRUE(tree.visible[k].witness && unlimited.visible[k].witness);
+        EXPECT_TRUE(tree.visible[k].witness->p == unlimited.visible[k].witness->p) << "seed " << seed;
+        EXPECT_TRUE(tree.visible[k].witness->q == unlimited.visible[k].witness->q) << "seed " << seed;
+      }
+      EXPECT_LE(tree.stats.boxes_given_up, tree.stats.boxes_tested - tree.stats.boxes_culled);
+      EXPECT_EQ(tree.stats.culled + tree.stats.accepted_by_rays + tree.stats.exact_queries, tree.stats.triangles);
+    }
+  }
+  EXPECT_GT(given_up, 0);
+}
+
 TEST(ExactPvs, VirtualOccludersOnRandomTownsAgreeWithBruteForceAndOracle) {
   // Random street-level cells in random towns, every node tested exactly: boxes proved hidden shadow what
   // lies behind them. The PVS must equal the brute-force per-triangle answers (check_pvs: witnesses re-checked
