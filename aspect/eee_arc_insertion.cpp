@@ -1,12 +1,11 @@
 #include "aspect/eee_arc_insertion.hpp"
 
 #include "aspect/eee_direction_cone.hpp"
+#include "kernel/predicates.hpp"
 #include "kernel/quadratic_polynomial.hpp"
 #include "kernel/rational_between.hpp"
 
 #include <algorithm>
-#include <cstdio>
-#include <cstdlib>
 #include <map>
 
 namespace exactvis {
@@ -16,14 +15,7 @@ using V3 = Vec3<Exact>;
 using R3 = Vec3<RootNumber>;
 using QP = QuadraticPolynomial;
 
-V3 ep(const Point3& p) { return {Exact(p.x), Exact(p.y), Exact(p.z)}; }
 
-V3 unit_max(const V3& v) {
-  Exact m = CGAL::abs(v.x);
-  if (CGAL::abs(v.y) > m) m = CGAL::abs(v.y);
-  if (CGAL::abs(v.z) > m) m = CGAL::abs(v.z);
-  return {v.x / m, v.y / m, v.z / m};
-}
 
 // o f(t) = c0 + t c1 + t^2 c2 (from three exact values of arc_direction: the family direction is quadratic).
 struct ArcPoly {
@@ -199,8 +191,8 @@ EeeArcInsertion insert_eee_arcs(const Scene& scene, const DirectionEventArcs& ev
     {
       std::array<V3, 3> pa, pu;
       for (int k = 0; k < 3; ++k) {
-        pa[k] = ep(scene.vertices[a.edges[k][0]]);
-        pu[k] = ep(scene.vertices[a.edges[k][1]]) - pa[k];
+        pa[k] = to_rational(scene.vertices[a.edges[k][0]]);
+        pu[k] = to_rational(scene.vertices[a.edges[k][1]]) - pa[k];
       }
       out.cone[ai] = eee_direction_cone(pa, pu).q;
     }
@@ -244,7 +236,7 @@ EeeArcInsertion insert_eee_arcs(const Scene& scene, const DirectionEventArcs& ev
         fail(a, "ends at a singular parameter (its family direction vanishes)");
         return out;
       }
-      if (pt.rational) pt.direction = unit_max(p.at(tq));
+      if (pt.rational) pt.direction = scaled_to_unit_max(p.at(tq));
       std::vector<int> on;
       for (std::size_t k = 0; k < normals.size(); ++k)
         if (CGAL::sign(dot_r(normals[k], d)) == 0) on.push_back(static_cast<int>(k));
@@ -283,7 +275,7 @@ EeeArcInsertion insert_eee_arcs(const Scene& scene, const DirectionEventArcs& ev
       s.first = first_point + static_cast<int>(k);
       s.second = s.first + 1;
       s.t = rational_strictly_between(cuts[k], cuts[k + 1]);
-      s.sample = unit_max(p.at(s.t));
+      s.sample = scaled_to_unit_max(p.at(s.t));
       bool on_circle = false;
       const auto it = face_of_signs.find(signs_of(s.sample, &on_circle));
       if (on_circle || it == face_of_signs.end()) throw std::logic_error("insert_eee_arcs: a sub-arc in no face");
@@ -404,8 +396,8 @@ std::array<Exact, 2> eee_end_tangent(const Scene& scene, const DirectionEventArc
   return {sg * (l[0][0] + l[0][1] * t_end), sg * (l[1][0] + l[1][1] * t_end)};
 }
 
-bool sample_off_eee_arcs(const EeeArcInsertion& ins, const GreatCircleArrangement& arr, int face, const V3& p,
-                         V3* out) {
+std::optional<V3> sample_off_eee_arcs(const EeeArcInsertion& ins, const GreatCircleArrangement& arr, int face,
+                                      const V3& p) {
   const V3 s = face_sample(arr, face);
   const V3 w = s - p;
   Exact eps(1);
@@ -414,7 +406,7 @@ bool sample_off_eee_arcs(const EeeArcInsertion& ins, const GreatCircleArrangemen
     QP h;
     h.c = {quad_form(q, p, p), Exact(2) * quad_form(q, p, w), quad_form(q, w, w)};
     const int s0 = CGAL::sign(h.c[0]);
-    if (s0 == 0) return false;
+    if (s0 == 0) return std::nullopt;
     // Halve eps until h keeps the sign of h(0) on [0, eps] (at eps and at an extremum inside).
     for (;;) {
       bool ok = CGAL::sign(h(eps)) == s0;
@@ -426,8 +418,7 @@ bool sample_off_eee_arcs(const EeeArcInsertion& ins, const GreatCircleArrangemen
       eps /= 2;
     }
   }
-  *out = unit_max(p + eps * w);
-  return true;
+  return scaled_to_unit_max(p + eps * w);
 }
 
 }  // namespace exactvis

@@ -21,6 +21,7 @@
 #include "kernel/vec3.hpp"
 
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -84,8 +85,8 @@ std::array<Exact, 2> eee_end_tangent(const Scene& scene, const DirectionEventArc
 // A rational direction strictly inside face `face` of the arrangement, in the component of the face minus
 // its sub-arcs whose closure holds the rational direction `p` (on the face's boundary, on no EEE cone of the
 // face's sub-arcs): p moved towards the face's sample by an exact power of two small enough that the segment
-// meets none of those cones. Returns false if p lies on one of those cones.
-bool sample_off_eee_arcs(const EeeArcInsertion& ins, const GreatCircleArrangement& arr, int face,
-                         const Vec3<Exact>& p, Vec3<Exact>* out);
+// meets none of those cones, scaled so that its largest |component| is 1. None if p lies on one of those cones.
+std::optional<Vec3<Exact>> sample_off_eee_arcs(const EeeArcInsertion& ins, const GreatCircleArrangement& arr,
+                                               int face, const Vec3<Exact>& p);
 
 }  // namespace exactvis

@@ -5,6 +5,7 @@
 #include "aspect/direction_event_arcs.hpp"
 #include "aspect/eee_arc_insertion.hpp"
 #include "aspect/great_circle_arrangement.hpp"
+#include "kernel/predicates.hpp"
 #include "kernel/rational_between.hpp"
 #include "kernel/triangle_index.hpp"
 #include "util/for_each_index.hpp"
@@ -19,7 +20,6 @@ namespace {
 
 using V3 = Vec3<Exact>;
 
-V3 ep(const Point3& p) { return {Exact(p.x), Exact(p.y), Exact(p.z)}; }
 
 // The representative of the line through n: n divided by its first non-zero component (so equal circles get
 // equal keys whatever the scale or sign of their normals).
@@ -37,13 +37,6 @@ bool same_direction(const V3& a, const V3& b) {
   return CGAL::sign(c.x) == 0 && CGAL::sign(c.y) == 0 && CGAL::sign(c.z) == 0 && CGAL::sign(dot(a, b)) > 0;
 }
 
-// Scaled so that the largest |component| is 1 (the output convention of AspectRegion3::sample).
-V3 unit_max(const V3& v) {
-  Exact m = CGAL::abs(v.x);
-  if (CGAL::abs(v.y) > m) m = CGAL::abs(v.y);
-  if (CGAL::abs(v.z) > m) m = CGAL::abs(v.z);
-  return {v.x / m, v.y / m, v.z / m};
-}
 
 // One free EV arc as the set {o (A - V + t (B - A)) : t in [t0, t1]} of directions, for membership tests.
 struct EvArc {
@@ -185,7 +178,8 @@ std::string split_face(const Scene& scene, const DirectionEventArcs& events, con
     for (int a : arcs_of_class[cls]) c.facets.push_back(a);
     bool sampled = false;
     for (int p : pieces)
-      if (sample_off_eee_arcs(ins, arr, f, cells[p].sample, &c.sample)) {
+      if (const auto s = sample_off_eee_arcs(ins, arr, f, cells[p].sample)) {
+        c.sample = *s;
         sampled = true;
         break;
       }
@@ -250,8 +244,8 @@ GeneralOrthographicResult general_orthographic_aspect_graph(const Scene& scene, 
   for (std::size_t i = 0; i < events.arcs.size(); ++i) {
     const auto& a = events.arcs[i];
     if (a.type != DirectionEventArc::Type::EV) continue;
-    const V3 v = ep(scene.vertices[a.vertex]), p = ep(scene.vertices[a.edges[0][0]]),
-             q = ep(scene.vertices[a.edges[0][1]]);
+    const V3 v = to_rational(scene.vertices[a.vertex]), p = to_rational(scene.vertices[a.edges[0][0]]),
+             q = to_rational(scene.vertices[a.edges[0][1]]);
     EvArc e{static_cast<int>(i), p - v, q - p, cross(p - v, q - p), a.orientation, a.t0.a0(), a.t1.a0()};
     const int c = add_circle(e.n);
     if (static_cast<int>(arcs_on.size()) <= c) arcs_on.resize(c + 1);
@@ -358,7 +352,7 @@ GeneralOrthographicResult general_orthographic_aspect_graph(const Scene& scene, 
     for (const Split& s : sp) {
       chain.push_back(static_cast<int>(cells.size()));
       lambdas.push_back(s.lambda);
-      Cell c{0, s.rational ? unit_max(s.d) : V3(), {arc.circle}, {}, -1, s.rational, {}};
+      Cell c{0, s.rational ? scaled_to_unit_max(s.d) : V3(), {arc.circle}, {}, -1, s.rational, {}};
       for (int i : s.eee_points) {
         point_cell[i] = chain.back();
         c.eee.push_back(ins.points[i].arc);
@@ -371,10 +365,10 @@ GeneralOrthographicResult general_orthographic_aspect_graph(const Scene& scene, 
       V3 sample;
       if (sp.empty()) sample = arc_sample(arr, normals, a);
       else if (cells[chain[k]].rational && cells[chain[k + 1]].rational)
-        sample = unit_max(cells[chain[k]].sample + cells[chain[k + 1]].sample);
+        sample = scaled_to_unit_max(cells[chain[k]].sample + cells[chain[k + 1]].sample);
       else {
         const Exact l = rational_strictly_between(lambdas[k], lambdas[k + 1]);
-        sample = unit_max((Exact(1) - l) * arr.vertices[arc.from] + l * arr.vertices[arc.to]);
+        sample = scaled_to_unit_max((Exact(1) - l) * arr.vertices[arc.from] + l * arr.vertices[arc.to]);
       }
       pieces_of_arc[a].push_back(static_cast<int>(cells.size()));
       chain_of_arc[a].push_back(chain[k]);
@@ -515,8 +509,8 @@ GeneralOrthographicResult general_orthographic_aspect_graph(const Scene& scene, 
         // face circle (first vertex, opposite edge).
         for (std::int64_t id : diff) {
           const auto& t = scene.triangles[index_of_id[id]];
-          const V3 p0 = ep(scene.corner(t, 0));
-          const V3 n = cross(ep(scene.corner(t, 1)) - p0, ep(scene.corner(t, 2)) - p0);
+          const V3 p0 = to_rational(scene.corner(t, 0));
+          const V3 n = cross(to_rational(scene.corner(t, 1)) - p0, to_rational(scene.corner(t, 2)) - p0);
           if (!(circle_key(n) == normals[k])) continue;
           AspectEvent3 ev;
           ev.vertex = t.v[0];

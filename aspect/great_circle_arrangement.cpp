@@ -17,12 +17,6 @@ PredicateCounter orientation_counter("great_circle_orientation");
 
 bool is_zero(const Vec3<Exact>& v) { return v.x == 0 && v.y == 0 && v.z == 0; }
 
-Vec3<Exact> scaled(Vec3<Exact> v) {
-  Exact big(0);
-  for (int i = 0; i < 3; ++i) big = std::max(big, CGAL::abs(v[i]));
-  for (int i = 0; i < 3; ++i) v[i] /= big;
-  return v;
-}
 
 using IVec = Vec3<ExactInt>;
 
@@ -88,6 +82,12 @@ void sort_about(const Filtered& axis, std::vector<std::pair<Filtered, Key>>& ite
 
 }  // namespace
 
+Vec3<Exact> scaled_to_unit_max(const Vec3<Exact>& v) {
+  Exact big(0);
+  for (int i = 0; i < 3; ++i) big = std::max(big, CGAL::abs(v[i]));
+  return {v.x / big, v.y / big, v.z / big};
+}
+
 GreatCircleArrangement great_circle_arrangement(const std::vector<Vec3<Exact>>& normals) {
   const int m = static_cast<int>(normals.size());
   // Integer normals (positive multiples), so that every construction below is in integers.
@@ -131,7 +131,7 @@ GreatCircleArrangement great_circle_arrangement(const std::vector<Vec3<Exact>>& 
   A.vertices.resize(V);
   tbb::parallel_for(0, V, [&](int v) {
     fv[v] = Filtered(iv[v]);
-    A.vertices[v] = scaled(rational(iv[v]));
+    A.vertices[v] = scaled_to_unit_max(rational(iv[v]));
   });
   for (int k = 0; k < m; ++k) fn[k] = Filtered(in[k]);
 
@@ -200,7 +200,7 @@ Vec3<Exact> face_sample(const GreatCircleArrangement& arr, int face) {
     const auto& a = arr.arcs[h / 2];
     s = s + arr.vertices[h % 2 == 0 ? a.from : a.to];
   }
-  return scaled(s);
+  return scaled_to_unit_max(s);
 }
 
 Vec3<Exact> arc_sample(const GreatCircleArrangement& arr, const std::vector<Vec3<Exact>>& normals, int arc) {
@@ -208,9 +208,9 @@ Vec3<Exact> arc_sample(const GreatCircleArrangement& arr, const std::vector<Vec3
   const Vec3<Exact>& u = arr.vertices[a.from];
   const Vec3<Exact>& v = arr.vertices[a.to];
   const Exact o = dot(normals[a.circle], cross(u, v));
-  if (o > 0) return scaled(u + v);
-  if (o == 0) return scaled(cross(normals[a.circle], u));  // a half circle (its ends antipodal)
-  return scaled(-(u + v));                                   // more than half a circle (not met: ends come in pairs)
+  if (o > 0) return scaled_to_unit_max(u + v);
+  if (o == 0) return scaled_to_unit_max(cross(normals[a.circle], u));  // a half circle (its ends antipodal)
+  return scaled_to_unit_max(-(u + v));                                   // more than half a circle (not met: ends come in pairs)
 }
 
 }  // namespace exactvis

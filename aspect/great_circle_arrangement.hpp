@@ -38,6 +38,10 @@ struct GreatCircleArrangement {
 // each vertex's arcs by angle (O(m^2 log m) filtered exact orientation signs), O(V + E + F) to trace faces.
 GreatCircleArrangement great_circle_arrangement(const std::vector<Vec3<Exact>>& normals);
 
+// v (non-zero) scaled so that its largest |component| is 1: the convention of every exact direction on the
+// viewing sphere here (circle normals, samples).
+Vec3<Exact> scaled_to_unit_max(const Vec3<Exact>& v);
+
 // An exact direction strictly inside cell: a face's (the sum of its vertices: every face is a convex
 // spherical polygon with at least three vertices), an arc's (the sum of its ends, or normal x from for a
 // half circle), scaled so that the largest |component| is 1.
