@@ -60,6 +60,24 @@ inline Scene two_boxes() {
   return make_scene(v, t);
 }
 
+// A terrain patch: heights h[i][j] over the grid (i, j), i, j = 0..k (vertex id (k + 1) i + j), two triangles
+// per square, split from (i, j) to (i + 1, j + 1): {a, b, b + 1} and {a, b + 1, a + 1} with a = (i, j),
+// b = (i + 1, j). An open surface (not a closed solid).
+inline Scene terrain_grid(const std::vector<std::vector<double>>& h) {
+  const int n = static_cast<int>(h.size());
+  std::vector<Point3> v;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) v.push_back({double(i), double(j), h[i][j]});
+  std::vector<std::array<int, 3>> t;
+  for (int i = 0; i + 1 < n; ++i)
+    for (int j = 0; j + 1 < n; ++j) {
+      const int a = n * i + j, b = a + n;
+      t.push_back({a, b, b + 1});
+      t.push_back({a, b + 1, a + 1});
+    }
+  return make_scene(v, t);
+}
+
 // Three unit cubes in a row along x with gaps of 1 ([2k, 2k+1] x [0,1] x [0,1], k = 0, 1, 2; triangles 12k to
 // 12k + 11 in add_box's order): outside the class of §10.5.
 inline Scene three_boxes() {

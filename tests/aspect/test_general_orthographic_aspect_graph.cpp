@@ -159,18 +159,7 @@ TEST(GeneralOrthographicAspectGraph, FreeEeeArcsOfThreeSkewTriangles) {
 // them (adjacencies naming EEE generators). (Its EEE arcs carry lower-dimensional regions; they do not separate
 // faces of different aspects, so a mutation that leaves the faces unsplit survives this test: see theory 10.12.)
 TEST(GeneralOrthographicAspectGraph, TerrainWithFreeEeeConics) {
-  const double h[3][3] = {{0.5, 0, 1}, {0, 1.5, 1.5}, {1.5, 1.5, 0.5}};
-  std::vector<Point3> v;
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) v.push_back({double(i), double(j), h[i][j]});
-  std::vector<std::array<int, 3>> t;
-  for (int i = 0; i < 2; ++i)
-    for (int j = 0; j < 2; ++j) {
-      const int a = 3 * i + j, b = 3 * (i + 1) + j, c = b + 1, d = a + 1;
-      t.push_back({a, b, c});
-      t.push_back({a, c, d});
-    }
-  const Scene s = make_scene(v, t);
+  const Scene s = terrain_grid({{0.5, 0, 1}, {0, 1.5, 1.5}, {1.5, 1.5, 0.5}});
   const auto r = general(s);
   ASSERT_TRUE(r.ok) << r.problem;
   EXPECT_EQ(r.eee_arcs, 4u);
@@ -182,18 +171,8 @@ TEST(GeneralOrthographicAspectGraph, TerrainWithFreeEeeConics) {
 // a free EEE arc touches a great circle, outside the subset handled: refused with a one-line error naming
 // its three edges "a-b, c-d and e-f" (vertex indices).
 TEST(GeneralOrthographicAspectGraph, EeeArcTouchingACircleIsRefused) {
-  const double h[4][4] = {{0.5, 0, 1, 0}, {1.5, 1.5, 1.5, 1.5}, {0.5, 0, 1.5, 0}, {1.5, 1.5, 0, 1.5}};
-  std::vector<Point3> v;
-  for (int i = 0; i < 4; ++i)
-    for (int j = 0; j < 4; ++j) v.push_back({double(i), double(j), h[i][j]});
-  std::vector<std::array<int, 3>> t;
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) {
-      const int a = 4 * i + j, b = 4 * (i + 1) + j, c = b + 1, d = a + 1;
-      t.push_back({a, b, c});
-      t.push_back({a, c, d});
-    }
-  const auto r = general_orthographic_aspect_graph(make_scene(v, t));
+  const Scene s = terrain_grid({{0.5, 0, 1, 0}, {1.5, 1.5, 1.5, 1.5}, {0.5, 0, 1.5, 0}, {1.5, 1.5, 0, 1.5}});
+  const auto r = general_orthographic_aspect_graph(s);
   EXPECT_FALSE(r.ok);
   EXPECT_GT(r.eee_arcs, 0u);
   EXPECT_NE(r.problem.find("touches a great circle"), std::string::npos) << r.problem;

@@ -106,18 +106,7 @@ TEST(OpenOrthographicAspectGraph, NonManifoldBook) {
 
 // A small terrain patch: a 3 x 3 grid of heights over [0,2]^2, two triangles per square.
 TEST(OpenOrthographicAspectGraph, TerrainPatch) {
-  const double h[3][3] = {{0, 1, 0}, {1, 2, 1}, {0, 1, 1}};
-  std::vector<Point3> v;
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) v.push_back({double(i), double(j), h[i][j]});
-  std::vector<std::array<int, 3>> t;
-  for (int i = 0; i < 2; ++i)
-    for (int j = 0; j < 2; ++j) {
-      const int a = 3 * i + j, b = a + 3;
-      t.push_back({a, b, b + 1});
-      t.push_back({a, b + 1, a + 1});
-    }
-  const Scene s = make_scene(v, t);
+  const Scene s = terrain_grid({{0, 1, 0}, {1, 2, 1}, {0, 1, 1}});
   const auto r = open_graph(s);
   check_against_oracle(s, r.graph, 36, 120);
 }
@@ -128,18 +117,7 @@ TEST(OpenOrthographicAspectGraph, TerrainPatch) {
 // Taking a face's aspect for such cells (the rule 10.10 had) puts one cell in the wrong region here; every
 // rational cell is now evaluated, and the oracle checks every cell's sample.
 TEST(OpenOrthographicAspectGraph, TerrainPatchWithEdgeOnCellsOffTheFreeArcs) {
-  const double h[3][3] = {{0, 0, 0}, {1, 0.5, 1}, {1, 0.5, 0}};
-  std::vector<Point3> v;
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) v.push_back({double(i), double(j), h[i][j]});
-  std::vector<std::array<int, 3>> t;
-  for (int i = 0; i < 2; ++i)
-    for (int j = 0; j < 2; ++j) {
-      const int a = 3 * i + j, b = a + 3;
-      t.push_back({a, b, b + 1});
-      t.push_back({a, b + 1, a + 1});
-    }
-  const Scene s = make_scene(v, t);
+  const Scene s = terrain_grid({{0, 0, 0}, {1, 0.5, 1}, {1, 0.5, 0}});
   const auto r = open_graph(s);
   EXPECT_EQ(r.eee_arcs, 0u);
   EXPECT_EQ(r.graph.regions.size(), 115u);
