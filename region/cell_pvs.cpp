@@ -30,6 +30,11 @@ const std::vector<std::int64_t>& PvsContext::coplanar_partners() const {
   return lazy_->partners;
 }
 
+const CoplanarPanels& PvsContext::coplanar_panels() const {
+  std::call_once(lazy_->panels_once, [&] { lazy_->panels = region::coplanar_panels(scene_); });
+  return lazy_->panels;
+}
+
 std::vector<std::string> visible_objects(const Scene& scene, const CellPvs& pvs) {
   std::vector<char> seen(scene.objects.size(), 0);
   for (const auto& v : pvs.visible) seen[scene.triangles[v.index].object] = 1;

@@ -11,6 +11,7 @@
 #include "kernel/triangle_index.hpp"
 #include "region/convex_occluder.hpp"
 #include "region/convex_polygon_3.hpp"
+#include "region/coplanar_panels.hpp"
 #include "region/extruded_scene.hpp"
 #include "region/triangle_bvh.hpp"
 #include "region/visibility_options.hpp"
@@ -44,6 +45,8 @@ class PvsContext {
   const std::vector<ConvexSolid>& solids() const;
   // The scene's coplanar partner triangles (region/coplanar_partners.hpp), computed on first use like solids().
   const std::vector<std::int64_t>& coplanar_partners() const;
+  // The scene's coplanar convex panels (region/coplanar_panels.hpp), computed on first use like solids().
+  const CoplanarPanels& coplanar_panels() const;
 
  private:
   const Scene& scene_;
@@ -52,10 +55,11 @@ class PvsContext {
   TriangleBvh bvh_;
   double diagonal_ = 0;
   struct Lazy {
-    std::once_flag once, solids_once, partners_once;
+    std::once_flag once, solids_once, partners_once, panels_once;
     ExtrudedScene extruded;
     std::vector<ConvexSolid> solids;
     std::vector<std::int64_t> partners;
+    CoplanarPanels panels;
   };
   std::unique_ptr<Lazy> lazy_ = std::make_unique<Lazy>();
 };
@@ -68,10 +72,15 @@ struct PvsOptions {
   bool hierarchy = true;    // cull subtrees of the triangle BVH whose box is proved hidden (§5.8)
   int box_rays = 32;        // Embree rays per BVH node to its triangles: one reaching the subtree skips the
                             // node's (exact) hidden-box test
+  int box_face_rays = 32;   // then Embree rays per BVH node from the cell to its box's faces facing the cell:
+                            // one hitting nothing before the face skips the node's hidden-box test (sound:
+                            // descending is; docs/theory.md §5.8)
   int min_cull = 16;        // hidden-box tests only for nodes of at least this many triangles
   bool merge_coplanar = true;  // hidden-box tests and triangle queries subtract coplanar partner triangles as
                                // one quadrilateral occluder (region/coplanar_partners.hpp; the same line sets,
                                // §5.8; witnesses found by the CSG may differ from those without)
+  bool merge_panels = true;  // with merge_coplanar: also whole coplanar convex panels (region/coplanar_panels.hpp;
+                             // a wall strip, a roof fan) as one convex occluder, before the pairs (§5.8)
   int box_splits_per_triangle = 0;   // > 0: a node's hidden-box test gives up after this many CSG splits per
                                       // triangle of the node, and the node is descended (sound, docs/theory.md
                                       // §5.8); 0: no limit

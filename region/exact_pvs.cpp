@@ -91,9 +91,13 @@ CellPvs exact_cell_pvs(const PvsContext& context, const RationalBox3& cell, cons
   const std::size_t n = scene.triangles.size();
   // Shaft occluders are gathered through the hierarchy (region/hierarchy_candidates.hpp): same answers.
   // With merge_coplanar, coplanar partner triangles are one quadrilateral occluder in the queries too.
-  const CandidateFinder finder = options.merge_coplanar
-                                     ? CandidateFinder(HierarchyCandidates{context.index(), &scene, &context.bvh(), {}, &context.coplanar_partners()})
-                                     : hierarchy_candidates(context.index(), scene, context.bvh());
+  // With merge_panels, whole coplanar convex panels too (before the pairs).
+  const CoplanarPanels* panels =
+      options.merge_coplanar && options.merge_panels ? &context.coplanar_panels() : nullptr;
+  const CandidateFinder finder =
+      options.merge_coplanar ? CandidateFinder(HierarchyCandidates{context.index(), &scene, &context.bvh(), {},
+                                                                   &context.coplanar_partners(), panels})
+                             : hierarchy_candidates(context.index(), scene, context.bvh());
   const Box3 approx = approximate_box(cell);
   std::vector<TriangleAnswer> answers(n);
   std::atomic<std::int64_t> decided{0};
@@ -166,6 +170,41 @@ CellPvs exact_cell_pvs(const PvsContext& context, const RationalBox3& cell, cons
       const int pos = bvh.position[hit.triangle_index];
       if (pos >= node.begin && pos < node.end) return true;
     }
+    // Rays to the box's faces: from a random point p of the cell to a random point x of a face whose outer
+    // open half-space holds p (so [p, x) lies outside the box); if nothing is hit before x, lines from the cell
+    // reach the box there, the exact test would most likely find them (it fails): descend without it.
+    const Box3& b = node.box;
+    for (int r = 0; r < options.box_face_rays; ++r) {
+      Point3 p;
+      for (int k = 0; k < 3; ++k) p[k] = approx.lo[k] + unit(rng) * (approx.hi[k] - approx.lo[k]);
+      std::array<double, 6> area{};
+      double total = 0;
+      for (int axis = 0; axis < 3; ++axis)
+        for (int high = 0; high < 2; ++high) {
+          const bool outside = high ? p[axis] > b.hi[axis] : p[axis] < b.lo[axis];
+          if (!outside) continue;
+          const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+          area[static_cast<std::size_t>(2 * axis + high)] = (b.hi[u] - b.lo[u]) * (b.hi[v] - b.lo[v]);
+          total += area[static_cast<std::size_t>(2 * axis + high)];
+        }
+      if (!(total > 0)) continue;
+      double pick = unit(rng) * total;
+      int face = -1;  // by area; the last face with area when rounding leaves `pick` over
+      for (int f = 0; f < 6; ++f) {
+        if (area[static_cast<std::size_t>(f)] == 0) continue;
+        face = f;
+        if (pick < area[static_cast<std::size_t>(f)]) break;
+        pick -= area[static_cast<std::size_t>(f)];
+      }
+      const int axis = face / 2, u = (axis + 1) % 3, v = (axis + 2) % 3;
+      Point3 x;
+      x[axis] = face % 2 ? b.hi[axis] : b.lo[axis];
+      x[u] = b.lo[u] + unit(rng) * (b.hi[u] - b.lo[u]);
+      x[v] = b.lo[v] + unit(rng) * (b.hi[v] - b.lo[v]);
+      const glm::vec3 origin(static_cast<float>(p.x), static_cast<float>(p.y), static_cast<float>(p.z));
+      const glm::vec3 dir(static_cast<float>(x.x - p.x), static_cast<float>(x.y - p.y), static_cast<float>(x.z - p.z));
+      if (!context.rays().occluded(origin, dir, 0.0f, 0.999f)) return true;
+    }
     return false;
   };
   auto box_hidden = [&](int index) {
@@ -180,7 +219,7 @@ CellPvs exact_cell_pvs(const PvsContext& context, const RationalBox3& cell, cons
                                         const int pos = bvh.position[t];
                                         return pos >= node.begin && pos < node.end;
                                       },
-                                      options.merge_coplanar ? &context.coplanar_partners() : nullptr};
+                                      options.merge_coplanar ? &context.coplanar_partners() : nullptr, panels};
     VisibilityStats stats;
     VisibilityOptions box_options = options.query;
     box_options.split_budget = static_cast<std::int64_t>(std::max(0, options.box_splits_per_triangle)) *

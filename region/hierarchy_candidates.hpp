@@ -9,6 +9,7 @@
 #include "kernel/scene.hpp"
 #include "kernel/triangle_index.hpp"
 #include "region/candidate_finder.hpp"
+#include "region/coplanar_panels.hpp"
 #include "region/triangle_bvh.hpp"
 
 #include <algorithm>
@@ -30,6 +31,10 @@ struct HierarchyCandidates {
   // May be null. Else the scene's coplanar partners (region/coplanar_partners.hpp): the stabbing-pair queries
   // through this finder subtract each pair of whole partner occluders as one quadrilateral (the same line set).
   const std::vector<std::int64_t>* partners = nullptr;
+  // May be null. Else the scene's coplanar convex panels (region/coplanar_panels.hpp): the stabbing-pair queries
+  // through this finder subtract each usable panel as one convex occluder (the same line set up to a null set),
+  // before the partner pairs.
+  const CoplanarPanels* panels = nullptr;
 
   // index.candidates_in_box(box) without the excluded triangles, in increasing order.
   std::vector<std::int64_t> operator()(const Box3& box) const;

@@ -145,6 +145,21 @@ class PairQuery {
     return std::nullopt;
   }
 
+  // Does the open segment (p, q) meet the occluder (its triangle, the pair's quadrilateral, or its panel as a
+  // fan of triangles)? Double geometry: it only orders the occluders.
+  static bool blocks(const ShaftOccluder& occ, const Point3& p, const Point3& q) {
+    if (occ.panel_loop) {
+      const std::vector<Point3>& l = *occ.panel_loop;
+      for (std::size_t i = 1; i + 1 < l.size(); ++i)
+        if (open_segment_meets_closed_triangle(p, q, l[0], l[i], l[i + 1])) return true;
+      return false;
+    }
+    return open_segment_meets_closed_triangle(p, q, occ.corners_d[0], occ.corners_d[1], occ.corners_d[2]) ||
+           (occ.partner >= 0 && open_segment_meets_closed_triangle(p, q, occ.partner_corners_d[0],
+                                                                   occ.partner_corners_d[1],
+                                                                   occ.partner_corners_d[2]));
+  }
+
   // Sample segments are cast with double endpoints (the counts only order the occluders); a sample that
   // looks free is redone with its exact rational endpoints and accepted only after the exact check.
   std::optional<Witness> sample() {
@@ -155,10 +170,7 @@ class PairQuery {
       const Point3 p = weighted_point_approx(src, ws), q = weighted_point_approx(dst, wt);
       bool free = true;
       for (auto& occ : occluders_)
-        if (open_segment_meets_closed_triangle(p, q, occ.corners_d[0], occ.corners_d[1], occ.corners_d[2]) ||
-            (occ.partner >= 0 && open_segment_meets_closed_triangle(p, q, occ.partner_corners_d[0],
-                                                                    occ.partner_corners_d[1],
-                                                                    occ.partner_corners_d[2]))) {
+        if (blocks(occ, p, q)) {
           ++occ.blocked_samples;
           free = false;
         }
@@ -203,6 +215,7 @@ PairVisibility pair_visibility(const Scene& scene, const HierarchyCandidates& fi
     return segment_is_free(scene, finder, box, p, q, target);
   };
   std::vector<ShaftOccluder> occluders = shaft_occluders(scene, finder, box, target, pair);
+  if (finder.panels) merge_coplanar_panels(occluders, *finder.panels, pair, target, finder.excluded);
   if (finder.partners) merge_coplanar_pairs(occluders, *finder.partners);
   PairQuery query(std::move(occluders), is_free, static_cast<std::uint64_t>(target), pair, options, out.stats);
   out.witness = query.run();

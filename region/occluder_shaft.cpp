@@ -4,6 +4,7 @@
 
 #include <CGAL/Mpzf.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <optional>
@@ -358,6 +359,61 @@ void merge_coplanar_pairs(std::vector<ShaftOccluder>& occluders, const std::vect
       if (w != i) occluders[w] = std::move(occluders[i]);
       ++w;
     }
+  occluders.resize(w);
+}
+
+void merge_coplanar_panels(std::vector<ShaftOccluder>& occluders, const CoplanarPanels& panels,
+                           const StabbingPair& pair, std::int64_t target,
+                           const std::function<bool(std::int64_t)>& excluded) {
+  if (occluders.empty()) return;
+  const std::size_t n = panels.panel_of.size();
+  auto panel_of = [&](const ShaftOccluder& o) -> std::int32_t {
+    if (o.triangle < 0 || static_cast<std::size_t>(o.triangle) >= n || o.panel_loop || o.partner >= 0) return -1;
+    return panels.panel_of[static_cast<std::size_t>(o.triangle)];
+  };
+  // The panels present, in order of first occurrence, and whether each is usable (decided once).
+  std::vector<std::pair<std::int32_t, std::size_t>> first;  // (panel, position of its first occluder)
+  for (std::size_t i = 0; i < occluders.size(); ++i) {
+    const std::int32_t p = panel_of(occluders[i]);
+    if (p < 0) continue;
+    bool known = false;
+    for (const auto& f : first) known |= f.first == p;
+    if (!known) first.emplace_back(p, i);
+  }
+  if (first.empty()) return;
+  const std::array<ShaftPlane, 2> wedge{ShaftPlane(pair.source_plane), ShaftPlane(pair.target_plane)};
+  std::vector<std::int32_t> used;  // usable panels, sorted
+  for (const auto& [p, at] : first) {
+    const CoplanarPanel& panel = panels.panels[static_cast<std::size_t>(p)];
+    bool ok = true;
+    for (const Point3& c : panel.loop)
+      for (const ShaftPlane& pl : wedge) ok = ok && pl.side(c) == Sign::Positive;
+    for (std::size_t k = 0; k < panel.triangles.size() && ok; ++k)
+      ok = panel.triangles[k] != target && !(excluded && excluded(panel.triangles[k]));
+    if (!ok) continue;
+    ShaftOccluder q;
+    q.triangle = occluders[at].triangle;
+    q.corners_d = occluders[at].corners_d;
+    q.panel_loop = &panel.loop;
+    const std::size_t m = panel.loop.size();
+    for (std::size_t i = 0; i < m; ++i) {
+      const Point3 &a = panel.loop[i], &b = panel.loop[(i + 1) % m];
+      ConeVector6 e;
+      if (!side_functional_of_doubles(a, b, e)) e = ConeVector6(side_functional(line_through(to_rational(a), to_rational(b))));
+      q.edges.push_back(std::move(e));
+    }
+    occluders[at] = std::move(q);
+    used.push_back(p);
+  }
+  if (used.empty()) return;
+  std::sort(used.begin(), used.end());
+  std::size_t w = 0;
+  for (std::size_t i = 0; i < occluders.size(); ++i) {
+    const std::int32_t p = panel_of(occluders[i]);
+    if (p >= 0 && std::binary_search(used.begin(), used.end(), p)) continue;  // merged into its panel
+    if (w != i) occluders[w] = std::move(occluders[i]);
+    ++w;
+  }
   occluders.resize(w);
 }
 
