@@ -72,6 +72,71 @@ TEST(DiscontinuityCurves, EvCurvesHaveTheGeneratorsOfLightRestrictedEvents) {
   EXPECT_EQ(n, 36);  // the curves reaching the floor (the JSON of docs/cli.md lists them)
 }
 
+// EEE curves against the events' intervals: every light-restricted EEE curve has the generators of an EEE
+// event and lies inside one of its free intervals, and each of its interior points (at rational parameters
+// inside the run) lies on a line meeting the three edges' segments at a parameter of E1 in the curve's range.
+// The line through X meeting the lines of E1 and E2 is recomputed here (planes through X), independently of
+// the events' and the conic's code.
+TEST(DiscontinuityCurves, EeeCurvesHaveTheGeneratorsAndLinesOfLightRestrictedEvents) {
+  int curves = 0, points = 0;
+  for (unsigned seed : {1u, 2u, 3u}) {
+    const Scene s = seed == 1 ? eee_scene() : shadow_test::random_blocker_scene(seed, 4);
+    const std::vector<int> light = seed == 1 ? std::vector<int>{3} : shadow_test::object_triangles(s, "lamp");
+    const TriangleIndex index(s);
+    EvOptions evo;
+    evo.light_triangles = light;
+    EeeOptions eeo;
+    eeo.light_triangles = light;
+    const EvResult ev = enumerate_ev_events(s, evo);
+    const EeeResult eee = enumerate_eee_events(s, eeo);
+    const auto all = event_curves(s, index, light, ev, eee, {0});
+    auto pos = [&](int v) { return Vec3<Exact>{Exact(s.vertices[v].x), Exact(s.vertices[v].y), Exact(s.vertices[v].z)}; };
+    for (const auto& [rid, list] : all)
+      for (const auto& c : list) {
+        if (c.kind != DiscontinuityCurve::Kind::EEE) continue;
+        ++curves;
+        EXPECT_GE(c.light_edge, 0);
+        const EeeEvent* event = nullptr;
+        for (const auto& e : eee.events)
+          if (e.edges == c.edges) event = &e;
+        ASSERT_NE(event, nullptr) << "seed " << seed;
+        bool inside = false;
+        for (const auto& iv : event->intervals) inside |= iv.t0 <= c.t0 && c.t1 <= iv.t1;
+        EXPECT_TRUE(inside) << "seed " << seed;
+        // Exactly one generator edge is on the light, the one named light_edge.
+        for (int k = 0; k < 3; ++k) {
+          bool on_light = false;
+          for (int t : light)
+            for (int a = 0; a < 3; ++a)
+              for (int b = 0; b < 3; ++b)
+                on_light |= s.triangles[t].v[a] == c.edges[k][0] && s.triangles[t].v[b] == c.edges[k][1];
+          EXPECT_EQ(on_light, k == c.light_edge) << "seed " << seed << " edge " << k;
+        }
+        std::array<Vec3<Exact>, 3> A, d;
+        for (int k = 0; k < 3; ++k) A[k] = pos(c.edges[k][0]), d[k] = pos(c.edges[k][1]) - A[k];
+        for (std::size_t i = 1; i + 1 < c.points.size(); ++i) {
+          const Vec3<Exact>& X = c.points[i];
+          EXPECT_EQ(X.z, Exact(0));  // on the floor
+          const Vec3<Exact> dir = cross(cross(A[0] - X, d[0]), cross(A[1] - X, d[1]));
+          ASSERT_NE(dir, (Vec3<Exact>{0, 0, 0}));
+          EXPECT_EQ(dot(cross(A[2] - X, d[2]), dir), Exact(0)) << "seed " << seed;  // meets E3's line
+          // Parameters of the line's meeting points on the three edges' lines: X + s dir = A_k + t d_k.
+          std::array<Exact, 3> t;
+          for (int k = 0; k < 3; ++k) {
+            const Vec3<Exact> n = cross(d[k], dir);
+            ASSERT_NE(n, (Vec3<Exact>{0, 0, 0}));
+            t[k] = dot(cross(X - A[k], dir), n) / dot(n, n);
+            EXPECT_TRUE(t[k] > 0 && t[k] < 1) << "seed " << seed << " edge " << k << " t " << t[k];
+          }
+          EXPECT_TRUE(c.t0 < RootNumber(t[0]) && RootNumber(t[0]) < c.t1) << "seed " << seed << " t " << t[0];
+          ++points;
+        }
+      }
+  }
+  EXPECT_GE(curves, 3);
+  EXPECT_GE(points, 30);
+}
+
 TEST(DiscontinuityCurves, ContactCurvesOfAPiercingBlocker) {
   Scene s = shadow_test::textbook_scene();
   // A triangle piercing the floor along the segment y = 2, x in [0, 4].

@@ -307,6 +307,42 @@ TEST(PolylineArrangement, TwoArcsCrossingTwiceBetweenTheirPoints) {
   EXPECT_EQ(both, 1);
 }
 
+// Rule (A) alone (docs/theory.md section 11, "Certified polyline arrangement"): two parabola arcs whose
+// first pieces cross twice, while their chords are far apart and neither piece's ends lie in the other's lens
+// (rule V silent), no segment comes near (S, T silent) and the one face's sample is far from both slivers.
+// Only (A) (the two lenses meet, their tangent cones overlap) splits the pieces until the thin face between
+// the arcs exists. In x = 10u - 5/2, y = 2v - 1/5: P is y = (4 - x^2) / 20 through x = -2, 3/2, 2 (first piece
+// from -2 to 3/2), Q is y = 3/20 + x^2 / 10 through x = -1, 4/5, 1 (first piece from -1 to 4/5); they cross
+// at x = +-1/sqrt(3), and the face between them has area (4/3)(1/sqrt 3)(1/20) in (x, y), 1/20 of it in (u, v).
+// Checked: with the (A) test disabled (cones_meet ignored) the arrangement has one face and this test fails.
+TEST(PolylineArrangement, RuleASplitsCrossingPiecesWhoseChordsAreApart) {
+  ArrangementCurve p, q;
+  p.points = {{Exact(1, 20), Exact(1, 10)}, {Exact(2, 5), Exact(23, 160)}, {Exact(9, 20), Exact(1, 10)}};
+  p.conic = std::array<Exact, 6>{5, 0, 0, Exact(-5, 2), 2, Exact(-7, 80)};
+  q.points = {{Exact(3, 20), Exact(9, 40)}, {Exact(33, 100), Exact(207, 1000)}, {Exact(7, 20), Exact(9, 40)}};
+  q.conic = std::array<Exact, 6>{-10, 0, 0, 5, 2, Exact(-39, 40)};
+  const std::vector<ArrangementCurve> curves{p, q};
+  const ReceiverArrangement a = polyline_arrangement(curves);
+  ASSERT_FALSE(a.failed) << a.failure;
+  EXPECT_EQ(a.conic_arcs, 2u);
+  EXPECT_GT(a.arc_pieces, 4u);  // split (4 pieces as given)
+  ASSERT_EQ(a.faces.size(), 2u);
+  auto value = [](const std::array<Exact, 6>& c, const P& x) {
+    return c[0] * x[0] * x[0] + c[1] * x[0] * x[1] + c[2] * x[1] * x[1] + c[3] * x[0] + c[4] * x[1] + c[5];
+  };
+  int between = 0;
+  for (const auto& f : a.faces) {
+    ASSERT_TRUE(strictly_in_triangle(f.sample));
+    // Below P (P's conic negative under the arc) and above Q (Q's conic positive above it).
+    if (value(*p.conic, f.sample) < 0 && value(*q.conic, f.sample) > 0) {
+      ++between;
+      EXPECT_NEAR(f.area_uv, 1 / (300 * std::sqrt(3.0)), 1e-4 / (300 * std::sqrt(3.0)));  // as LensBeyondTheChords
+    }
+  }
+  EXPECT_EQ(between, 1);
+  EXPECT_TRUE(agrees_in_frame(curves, a, frames()[0]));
+}
+
 // Curves in the dump format of conic_arrangement.cpp (EXACTVIS_DUMP_ARRANGEMENTS).
 std::vector<ArrangementCurve> read_dump(const std::string& path) {
   std::ifstream in(path);
