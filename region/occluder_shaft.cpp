@@ -17,6 +17,17 @@ std::vector<Plane3> shaft_planes(const StabbingPair& pair) {
   std::vector<RationalPoint3> pts = pair.source;
   pts.insert(pts.end(), pair.target.begin(), pair.target.end());
   std::vector<Plane3> planes{pair.source_plane, pair.target_plane};
+  // The side of point p with respect to plane_through(a, b, c) is the sign of ((b - a) x (c - a)) . (p - a):
+  // evaluated first in interval arithmetic from enclosures of the points (computed once), the exact plane
+  // built only when an interval contains 0 or the plane is kept. The same signs, hence the same planes.
+  using I = Interval;
+  std::vector<std::array<I, 3>> enc(pts.size());
+  for (std::size_t i = 0; i < pts.size(); ++i)
+    for (int k = 0; k < 3; ++k) enc[i][static_cast<std::size_t>(k)] = I(enclosing_interval(pts[i][k]));
+  auto sub = [](const std::array<I, 3>& x, const std::array<I, 3>& y) {
+    return std::array<I, 3>{x[0] - y[0], x[1] - y[1], x[2] - y[2]};
+  };
+  std::vector<signed char> sign(pts.size());  // +1, -1, 0: on the plane or undecided by the intervals
   // edges_at: offset of edges_of in pts, vertices_at: that of vertices_of.
   auto consider = [&](const Polygon3& edges_of, std::size_t edges_at, const Polygon3& vertices_of,
                       std::size_t vertices_at) {
@@ -27,18 +38,37 @@ std::vector<Plane3> shaft_planes(const StabbingPair& pair) {
       for (std::size_t ci = 0; ci < vertices_of.size(); ++ci) {
         const auto& c = vertices_of[ci];
         if (collinear(a, b, c)) continue;
-        const Plane3 pl = plane_through(a, b, c);
+        // a, b, c lie on the plane by construction (side 0, which sets neither flag): not evaluated.
+        auto skip = [&](std::size_t pi) { return pi == edges_at + i || pi == edges_at + i1 || pi == vertices_at + ci; };
         bool pos = false, neg = false;
-        for (std::size_t pi = 0; pi < pts.size(); ++pi) {
-          // a, b, c lie on the plane by construction (side 0, which sets neither flag): not evaluated.
-          if (pi == edges_at + i || pi == edges_at + i1 || pi == vertices_at + ci) continue;
-          const Sign s = plane_side(pl, pts[pi]);
-          pos |= s == Sign::Positive;
-          neg |= s == Sign::Negative;
-          if (pos && neg) break;  // not a supporting plane: the remaining signs cannot change that
+        {
+          CGAL::Protect_FPU_rounding<true> guard;  // interval arithmetic only in this scope
+          const std::array<I, 3>& ea = enc[edges_at + i];
+          const std::array<I, 3> ab = sub(enc[edges_at + i1], ea), ac = sub(enc[vertices_at + ci], ea);
+          const std::array<I, 3> n{ab[1] * ac[2] - ab[2] * ac[1], ab[2] * ac[0] - ab[0] * ac[2],
+                                   ab[0] * ac[1] - ab[1] * ac[0]};
+          for (std::size_t pi = 0; pi < pts.size(); ++pi) {
+            sign[pi] = 0;
+            if (skip(pi)) continue;
+            const std::array<I, 3> ap = sub(enc[pi], ea);
+            const I v = n[0] * ap[0] + n[1] * ap[1] + n[2] * ap[2];
+            sign[pi] = v.inf() > 0 ? 1 : v.sup() < 0 ? -1 : 0;
+            pos |= sign[pi] > 0;
+            neg |= sign[pi] < 0;
+          }
+        }
+        if (pos && neg) continue;  // not a supporting plane
+        std::optional<Plane3> pl;  // plane_through(a, b, c), built on demand
+        for (std::size_t pi = 0; pi < pts.size() && !(pos && neg); ++pi) {
+          if (skip(pi) || sign[pi] != 0) continue;
+          if (!pl) pl = plane_through(a, b, c);
+          const Sign sd = plane_side(*pl, pts[pi]);
+          pos |= sd == Sign::Positive;
+          neg |= sd == Sign::Negative;
         }
         if (pos && neg) continue;
-        planes.push_back(neg ? pl.flipped() : pl);
+        if (!pl) pl = plane_through(a, b, c);
+        planes.push_back(neg ? pl->flipped() : *pl);
       }
     }
   };

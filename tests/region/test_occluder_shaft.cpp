@@ -118,6 +118,74 @@ TEST(OccluderShaft, ShortcutGivesTheRationalClippingsOccluders) {
   EXPECT_GT(after.constructions[1] - before.constructions[1], 100u);
 }
 
+// shaft_planes against the planes computed here with GMP rationals only (mpq): for every edge of one polygon
+// and vertex of the other (source edges first), the plane through them when it is not collinear and has every
+// point of both polygons on one closed side, oriented so that they are on its side >= 0, in that order. Grid
+// coordinates put many points exactly on the candidate planes (the intervals cannot decide them); rational
+// pieces of split polygons and arbitrary doubles make the enclosures wide.
+TEST(OccluderShaft, ShaftPlanesAreTheSupportingPlanesOfTheOracle) {
+  std::mt19937_64 rng(77);
+  int pairs = 0, planes_seen = 0;
+  auto q = [](const RationalPoint3& p) {
+    return std::array<mpq_class, 3>{mpq_class(p.x.mpq()), mpq_class(p.y.mpq()), mpq_class(p.z.mpq())};
+  };
+  using Q3 = std::array<mpq_class, 3>;
+  auto sub = [](const Q3& a, const Q3& b) { return Q3{a[0] - b[0], a[1] - b[1], a[2] - b[2]}; };
+  auto cross = [](const Q3& a, const Q3& b) {
+    return Q3{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+  };
+  auto dot = [](const Q3& a, const Q3& b) { return mpq_class(a[0] * b[0] + a[1] * b[1] + a[2] * b[2]); };
+  for (int trial = 0; trial < 80; ++trial) {
+    Fixture f = random_scene(rng, trial % 3 != 2, 4);
+    Polygon3 source;
+    if (trial % 2 == 0) {
+      const Exact z(static_cast<long>(rng() % 5) - 2);
+      source = {{Exact(-1), Exact(-1), z}, {Exact(1), Exact(-1), z}, {Exact(1), Exact(1), z}, {Exact(-1), Exact(1), z}};
+    } else {
+      source = {f.exact[0][0], f.exact[0][1], f.exact[0][2]};
+    }
+    for (int t = 1; t < 4; ++t)
+      for (const auto& pair : stabbing_pairs(source, f.exact[static_cast<std::size_t>(t)])) {
+        ++pairs;
+        std::vector<Q3> pts;
+        for (const auto& p : pair.source) pts.push_back(q(p));
+        for (const auto& p : pair.target) pts.push_back(q(p));
+        const std::size_t ns = pair.source.size();
+        std::vector<std::pair<Q3, mpq_class>> expected;  // (normal, offset)
+        auto consider = [&](std::size_t e0, std::size_t ne, std::size_t v0, std::size_t nv) {
+          for (std::size_t i = 0; i < ne; ++i)
+            for (std::size_t c = 0; c < nv; ++c) {
+              const Q3 &a = pts[e0 + i], &b = pts[e0 + (i + 1) % ne], &cc = pts[v0 + c];
+              Q3 n = cross(sub(b, a), sub(cc, a));
+              if (n[0] == 0 && n[1] == 0 && n[2] == 0) continue;
+              bool pos = false, neg = false;
+              for (const Q3& p : pts) {
+                const int sg = sgn(dot(n, sub(p, a)));
+                pos |= sg > 0;
+                neg |= sg < 0;
+              }
+              if (pos && neg) continue;
+              if (neg) n = Q3{-n[0], -n[1], -n[2]};
+              expected.emplace_back(n, dot(n, a));
+            }
+        };
+        consider(0, ns, ns, pair.target.size());
+        consider(ns, pair.target.size(), 0, ns);
+        const std::vector<Plane3> got = shaft_planes(pair);
+        ASSERT_EQ(got.size(), expected.size() + 2) << "trial " << trial;
+        for (std::size_t k = 0; k < expected.size(); ++k) {
+          const Plane3& g = got[k + 2];
+          const Q3 gn{mpq_class(g.normal.x.mpq()), mpq_class(g.normal.y.mpq()), mpq_class(g.normal.z.mpq())};
+          EXPECT_TRUE(gn == expected[k].first) << "trial " << trial << " plane " << k;
+          EXPECT_TRUE(mpq_class(g.offset.mpq()) == expected[k].second) << "trial " << trial << " plane " << k;
+          ++planes_seen;
+        }
+      }
+  }
+  EXPECT_GT(pairs, 100);
+  EXPECT_GT(planes_seen, 500);
+}
+
 // The occluders' edge functionals equal the lines through consecutive corners of clip_polygon's clipping
 // (both polygon planes), computed by the oracle from the rational points: the tracked clipping takes the
 // functionals of edges on triangle edges from the triangle's corners, which must be the same directed lines.
