@@ -245,10 +245,9 @@ TEST(GeneralOrthographicAspectGraph, TerrainWithIrrationalCrossingsOfFreeArcs) {
 }
 
 // The 2 x 2 terrain of seed 32 (refused before session 10): a free EEE arc touches a great circle of the
-// partition (a double root of n . f, rational), inside one of its arcs; the two sub-arcs next to the touching
-// point lie in one face with both ends at that boundary point, leaving it along the boundary both ways (angles 0
-// and a half turn of the sweep, docs/theory.md 10.11 "Faces"). The session 9 order (by the sign of r_0 x r_1
-// alone) called them tangential and refused the model.
+// partition (a double root of n . f, rational), now a cut point like a crossing (docs/theory.md 10.11 "Cuts").
+// (Its two sub-arcs there do not end at one boundary point of one face: the session 9 order of such ends passes
+// this test too, so the straight-angle case of the sweep order has no failing-able test yet.)
 TEST(GeneralOrthographicAspectGraph, TerrainWithAnEeeArcTouchingACircle) {
   const Scene s = terrain_grid({{0, 0.5, 0.5}, {1, 0.5, 1.5}, {0, 0, 0}});
   const auto r = general(s);
