@@ -211,13 +211,9 @@ EeeArcInsertion insert_eee_arcs(const Scene& scene, const DirectionEventArcs& ev
         fail(a, "lies on a great circle of the partition");
         return out;
       }
-      if (q.degree() == 2 && CGAL::sign(q.c[1] * q.c[1] - Exact(4) * q.c[0] * q.c[2]) == 0) {
-        const Exact r = -q.c[1] / (Exact(2) * q.c[2]);
-        if (!(r < t0) && !(t1 < r)) {
-          fail(a, "touches a great circle of the partition");
-          return out;
-        }
-      }
+      // A double root (the arc touching the circle, at a rational point) is a cut like a crossing: both
+      // sub-arcs next to it lie in one face, their ends at one boundary point ordered by the sweep of their
+      // tangents (general_orthographic_aspect_graph, docs/theory.md 10.11).
       for (const RealRoot& r : real_roots(q))
         if (!(r.t < rn(t0)) && !(rn(t1) < r.t)) cuts.push_back(r.t);
     }

@@ -10,9 +10,9 @@
 // the arc inside a face. Within a face, sub-arcs must be pairwise disjoint (certified by exact rational boxes
 // in the face's central chart, refined by bisection of the parameter), so inside each face they form a
 // non-crossing diagram of simple curves whose faces follow from the cyclic order of their ends on the face's
-// boundary (aspect/general_orthographic_aspect_graph). The subset handled (else `ok` is false with one line
-// in `problem`): arc ends at rational parameters, no tangency with a circle, no EEE arc lying on a circle,
-// no two EEE arcs meeting.
+// boundary (aspect/general_orthographic_aspect_graph). An arc touching a circle (a double root, rational) is cut
+// there like at a crossing. The subset handled (else `ok` is false with one line in `problem`): arc ends at
+// rational parameters, no EEE arc lying on a circle, no two EEE arcs meeting but at common rational cut points.
 #include "aspect/direction_event_arcs.hpp"
 #include "aspect/great_circle_arrangement.hpp"
 #include "kernel/number_types.hpp"

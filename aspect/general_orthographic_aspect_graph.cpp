@@ -4,6 +4,7 @@
 #include "aspect/direction_aspect.hpp"
 #include "aspect/direction_event_arcs.hpp"
 #include "aspect/eee_arc_insertion.hpp"
+#include "aspect/eee_crossing_point.hpp"
 #include "aspect/great_circle_arrangement.hpp"
 #include "kernel/predicates.hpp"
 #include "kernel/rational_between.hpp"
@@ -113,20 +114,31 @@ std::string split_face(const Scene& scene, const DirectionEventArcs& events, con
     root_number_rational(p.t, &t);
     return eee_end_tangent(scene, events.arcs[s.arc], chart, t, e.k);
   };
+  // Ends at one boundary point x are ordered by the angle of their tangents swept from the boundary before x
+  // (towards the previous ring cell) through the face's interior (the chart's origin, the face's sample) to the
+  // boundary after x: bucket 0 along the boundary before x, 1 strictly inside the sweep, 2 along the boundary
+  // after x when x is no vertex (a straight angle there: an arc touching the circle at x leaves it both ways).
   bool unordered = false;
   std::sort(list.begin(), list.end(), [&](const End& a, const End& b) {
     if (a.pos != b.pos) return a.pos < b.pos;
     if (a.sub == b.sub && a.k == b.k) return false;
     const auto x = chart_point(chart, cells[ring[a.pos]].sample);
-    auto rel = [&](int c) {
-      const auto y = chart_point(chart, cells[c].sample);
-      return std::array<Exact, 2>{y[0] - x[0], y[1] - x[1]};
+    const auto y = chart_point(chart, cells[ring[(a.pos + n - 1) % n]].sample);
+    const std::array<Exact, 2> r0{y[0] - x[0], y[1] - x[1]}, w{-x[0], -x[1]};
+    const int sweep = CGAL::sign(r0[0] * w[1] - r0[1] * w[0]);
+    auto cr = [](const std::array<Exact, 2>& u, const std::array<Exact, 2>& v) { return CGAL::sign(u[0] * v[1] - u[1] * v[0]); };
+    auto bucket = [&](const std::array<Exact, 2>& v) {
+      const int c = cr(r0, v) * sweep;
+      if (c > 0) return 1;
+      if (c < 0) return 3;
+      return CGAL::sign(r0[0] * v[0] + r0[1] * v[1]) > 0 ? 0 : 2;
     };
-    const auto r0 = rel(ring[(a.pos + n - 1) % n]), r1 = rel(ring[(a.pos + 1) % n]);
     const auto va = tangent(a), vb = tangent(b);
-    const int o = CGAL::sign(va[0] * vb[1] - va[1] * vb[0]);
-    if (o == 0) unordered = true;
-    return o == CGAL::sign(r0[0] * r1[1] - r0[1] * r1[0]);
+    const int ba = bucket(va), bb = bucket(vb);
+    if (ba != bb) return ba < bb;
+    const int o = cr(va, vb) * sweep;
+    if (o == 0 && CGAL::sign(va[0] * vb[0] + va[1] * vb[1]) > 0) unordered = true;
+    return o > 0;
   });
   if (unordered) return "two free EEE arcs leave a common point tangentially";
   const int m = static_cast<int>(list.size());
@@ -417,22 +429,38 @@ GeneralOrthographicResult general_orthographic_aspect_graph(const Scene& scene, 
   std::vector<char> evaluate(nc, 0);
   for (int c = 0; c < nc; ++c) evaluate[c] = cells[c].dimension == 2 || cells[c].rational;
   // An irrational cut point of an EEE arc (on one circle, strictly inside an arrangement arc) takes the aspect
-  // of the EEE sub-arc through it, unless a free EV arc holds it too (then it is a crossing of two free arcs,
-  // outside the subset handled: its aspect would need an evaluation at an algebraic direction).
+  // of the EEE sub-arc through it, unless a free arc of its circle holds it too (a crossing of two free arcs):
+  // then the intersection of the aspects of the circle's two pieces next to it, when the EEE line there meets
+  // no fourth edge (docs/theory.md 10.11, "Irrational crossings"; else refused).
+  std::vector<std::vector<int>> meet_of(nc);  // per irrational crossing: the two circle pieces next to it
+  std::vector<int> crossing_point(nc, -1);     // and its cut point (index into ins.points)
   for (int c = 0; c < nc; ++c) {
     if (cells[c].rational) continue;
-    for (int k : cells[c].circles)
-      if (k < static_cast<int>(arcs_on.size()))
-        for (int p = 0; p < nc; ++p)
-          if (cells[p].dimension == 1 && !cells[p].circles.empty() && cells[p].circles[0] == k &&
-              std::count(cells[p].facets.begin(), cells[p].facets.end(), c))
-            if (std::any_of(arcs_on[k].begin(), arcs_on[k].end(), [&](const EvArc& e) { return on_arc(e, cells[p].sample); }) ||
-                std::any_of(ceee_on[k].begin(), ceee_on[k].end(), [&](const CircleEeeArc& e) { return on_circle_eee(e, cells[p].sample); })) {
-              out.problem = std::to_string(out.eee_arcs) +
-                            " free EEE event arcs bound its aspects, and one crosses a free arc of a great circle at an "
-                            "irrational direction, outside the subset the orthographic aspect graph handles (docs/theory.md 10.11)";
-              return out;
-            }
+    for (int k : cells[c].circles) {
+      if (k >= static_cast<int>(arcs_on.size())) continue;
+      std::vector<int> next;
+      bool on_free = false;
+      for (int p = 0; p < nc; ++p)
+        if (cells[p].dimension == 1 && !cells[p].circles.empty() && cells[p].circles[0] == k &&
+            std::count(cells[p].facets.begin(), cells[p].facets.end(), c)) {
+          next.push_back(p);
+          on_free |= std::any_of(arcs_on[k].begin(), arcs_on[k].end(), [&](const EvArc& e) { return on_arc(e, cells[p].sample); }) ||
+                     std::any_of(ceee_on[k].begin(), ceee_on[k].end(), [&](const CircleEeeArc& e) { return on_circle_eee(e, cells[p].sample); });
+        }
+      if (!on_free) continue;
+      std::string why = next.size() == 2 ? std::string() : std::string("an irrational crossing is no interior point of one arc");
+      for (std::size_t i = 0; i < ins.points.size() && why.empty(); ++i)
+        if (point_cell[i] == c) {
+          why = eee_line_meets_only_its_edges(scene, events.arcs[ins.points[i].arc], ins.points[i].t);
+          crossing_point[c] = static_cast<int>(i);
+        }
+      if (!why.empty()) {
+        out.problem = std::to_string(out.eee_arcs) + " free EEE event arcs bound its aspects, and " + why +
+                      ", outside the subset the orthographic aspect graph handles (docs/theory.md 10.11)";
+        return out;
+      }
+      meet_of[c] = next;
+    }
   }
   std::vector<int> copy_from(nc, -1);
   for (int c = 0; c < nc; ++c)
@@ -450,11 +478,19 @@ GeneralOrthographicResult general_orthographic_aspect_graph(const Scene& scene, 
     aspect[todo[i]] = direction_aspect(scene, cells[todo[i]].sample, &index).aspect;
   });
   if (progress) progress(0.9);
+  for (int c = 0; c < nc; ++c)
+    if (meet_of[c].size() == 2) {
+      const auto &x = aspect[meet_of[c][0]], &y = aspect[meet_of[c][1]];
+      aspect[c].clear();
+      std::set_intersection(x.begin(), x.end(), y.begin(), y.end(), std::back_inserter(aspect[c]));
+      const EeeArcPoint& pt = ins.points[crossing_point[c]];
+      out.irrational_crossings.push_back({eee_direction_approx(scene, events.arcs[pt.arc], pt.t), aspect[c]});
+    }
   std::map<std::vector<std::int64_t>, int> aspect_id;
   std::vector<AspectCell> acells(nc);
   for (int c = 0; c < nc; ++c) {
     const int src = evaluate[c] ? c : (copy_from[c] >= 0 ? copy_from[c] : cells[c].neighbour_face);
-    if (!evaluate[c]) aspect[c] = aspect[src];
+    if (!evaluate[c] && meet_of[c].empty()) aspect[c] = aspect[src];
     acells[c].dimension = cells[c].dimension;
     acells[c].aspect = aspect_id.insert({aspect[c], static_cast<int>(aspect_id.size())}).first->second;
     acells[c].facets = cells[c].facets;
@@ -471,6 +507,13 @@ GeneralOrthographicResult general_orthographic_aspect_graph(const Scene& scene, 
       std::string signs(normals.size(), '0');
       for (std::size_t k = 0; k < normals.size(); ++k) signs[k] = sign_char(CGAL::sign(dot(normals[k], cells[c].sample)));
       g.sampled_cells.push_back({regions.region_of[c], cells[c].dimension, cells[c].sample, std::move(signs)});
+    }
+  for (std::size_t r = 0; r < regions.members.size(); ++r)
+    if (!cells[region_sample_cell(regions, r, cells)].rational) {
+      out.problem = std::to_string(out.eee_arcs) +
+                    " free EEE event arcs bound its aspects, and an irrational crossing of two free arcs is a region of its "
+                    "own (no rational sample), outside the subset the orthographic aspect graph handles (docs/theory.md 10.11)";
+      return out;
     }
   for (std::size_t r = 0; r < regions.members.size(); ++r) {
     const int best = region_sample_cell(regions, r, cells);
@@ -493,11 +536,13 @@ GeneralOrthographicResult general_orthographic_aspect_graph(const Scene& scene, 
     std::set<int> diff_vertices;
     for (std::int64_t id : diff)
       for (int v : scene.triangles[index_of_id[id]].v) diff_vertices.insert(v);
+    // An irrational crossing has no sample: its circle's free arcs are those of the pieces next to it.
+    const V3& probe = meet_of[adj.lower].empty() ? cells[adj.lower].sample : cells[meet_of[adj.lower][0]].sample;
     for (int k : cells[adj.lower].circles) {
       const DirectionEventArc* pick = nullptr;
       for (const EvArc& e : arcs_on[k]) {
         const auto& arc = events.arcs[e.index];
-        if (!on_arc(e, cells[adj.lower].sample)) continue;
+        if (!on_arc(e, probe)) continue;
         const bool on_diff = diff_vertices.count(arc.vertex) && diff_vertices.count(arc.edges[0][0]) &&
                              diff_vertices.count(arc.edges[0][1]);
         if (!pick || (on_diff && !(diff_vertices.count(pick->vertex) && diff_vertices.count(pick->edges[0][0]) &&

@@ -17,8 +17,11 @@
 #include "aspect/aspect_graph_3d.hpp"
 #include "kernel/scene.hpp"
 
+#include <array>
 #include <cstddef>
+#include <cstdint>
 #include <string>
+#include <vector>
 
 namespace exactvis {
 
@@ -27,6 +30,14 @@ struct GeneralOrthographicResult {
   std::string problem;  // when !ok: one line without the file name
   AspectGraph3 graph;
   std::size_t circles = 0, ev_arcs = 0, eee_arcs = 0, evaluated_cells = 0;
+  // Each crossing of a free EEE arc with a free arc of a great circle at an irrational direction (docs/theory.md
+  // 10.11, "Irrational crossings"): a double approximation of the direction and its exact aspect (the
+  // intersection of the aspects of the circle's two pieces next to it), for tests.
+  struct IrrationalCrossing {
+    std::array<double, 3> direction{};
+    std::vector<std::int64_t> aspect;
+  };
+  std::vector<IrrationalCrossing> irrational_crossings;
 };
 
 // Input: a model whose triangles meet only in shared corners and edges. Output: the orthographic aspect graph
