@@ -1,5 +1,6 @@
 #include "events/ev_interval_split.hpp"
 
+#include "events/ev_split_filter.hpp"
 #include "events/interval_end_key.hpp"
 #include "kernel/ray_first_hit.hpp"
 #include "kernel/predicates.hpp"
@@ -48,6 +49,17 @@ std::optional<Exact> param_of(const P2& x) {
 }
 
 bool has_vertex(const SceneTriangle& t, int v) { return t.v[0] == v || t.v[1] == v || t.v[2] == v; }
+
+I enclose(const Exact& x) {
+  const auto e = enclosing_interval(x);
+  return I(e.first, e.second);
+}
+
+// Enclosures of a segment's ends: alpha, beta of p, then of q.
+std::array<I, 4> enclose_ends(const P2& p, const P2& q) {
+  return {enclose(p.alpha), enclose(p.beta), enclose(q.alpha), enclose(q.beta)};
+}
+
 
 // Interval enclosure of the region swept by one side's rays (front: V + s d(t), 1 <= s <= L; back:
 // -L <= s <= 0) for t in [t0, t1], clipped to the scene box. L bounds |s| for points in the box:
@@ -166,6 +178,8 @@ std::vector<CriticalInterval> split_ev_interval(const Scene& scene, const SceneA
   std::sort(cand.begin(), cand.end());
   cand.erase(std::unique(cand.begin(), cand.end()), cand.end());
   std::vector<Seg> segs;
+  // Interval enclosures of the segments' ends (alpha, beta of p, then of q), for the filters below.
+  std::vector<std::array<I, 4>> seg_box;
   std::map<int, std::vector<std::size_t>> segs_of;
   for (std::int64_t ti64 : cand) {
     const int ti = static_cast<int>(ti64);
@@ -177,14 +191,20 @@ std::vector<CriticalInterval> split_ev_interval(const Scene& scene, const SceneA
     if ((o[0] > 0 && o[1] > 0 && o[2] > 0) || (o[0] < 0 && o[1] < 0 && o[2] < 0)) continue;
     if (!may_matter(t)) continue;
     std::array<CornerCoords, 3> mc;
-    std::array<P2, 3> wc;
-    for (int k = 0; k < 3; ++k) {
-      mc[k] = corner_coords(scene.corner(t, k));
-      wc[k] = {Exact(mc[k].alpha), Exact(mc[k].beta)};
-    }
+    for (int k = 0; k < 3; ++k) mc[k] = corner_coords(scene.corner(t, k));
+    // A corner's rational wedge coordinates, converted only for corners in the plane.
+    auto wc = [&](int k) { return P2{Exact(mc[k].alpha), Exact(mc[k].beta)}; };
     // Keep only segments whose parameter range can meet [t0, t1] (t is monotone along a segment on which
     // sigma = alpha + beta keeps its sign; otherwise keep it).
+    // The ends' enclosures decide first (they are kept for the crossing filter below); exact rationals only
+    // when the enclosures cannot.
     auto push = [&](const P2& p, const P2& q, const OccluderFeature& pf, const OccluderFeature& qf) {
+      const std::array<I, 4> eb = enclose_ends(p, q);
+      switch (segment_t_range_meets(eb, it0, it1)) {
+        case FilterAnswer::No: return;
+        case FilterAnswer::Yes: segs_of[ti].push_back(segs.size()); segs.push_back({ti, p, q, pf, qf}); seg_box.push_back(eb); return;
+        case FilterAnswer::Unknown: break;
+      }
       const int sp = CGAL::sign(p.alpha + p.beta), sq = CGAL::sign(q.alpha + q.beta);
       if (sp != 0 && sp == sq) {
         const Exact tp = p.beta / (p.alpha + p.beta), tq = q.beta / (q.alpha + q.beta);
@@ -192,16 +212,18 @@ std::vector<CriticalInterval> split_ev_interval(const Scene& scene, const SceneA
       }
       segs_of[ti].push_back(segs.size());
       segs.push_back({ti, p, q, pf, qf});
+      seg_box.push_back(eb);
     };
     if (o[0] == 0 && o[1] == 0 && o[2] == 0) {  // coplanar: its three edges
-      for (int k = 0; k < 3; ++k) push(wc[k], wc[(k + 1) % 3], vertex_feature(t.v[k]), vertex_feature(t.v[(k + 1) % 3]));
+      const std::array<P2, 3> w{wc(0), wc(1), wc(2)};
+      for (int k = 0; k < 3; ++k) push(w[k], w[(k + 1) % 3], vertex_feature(t.v[k]), vertex_feature(t.v[(k + 1) % 3]));
       continue;
     }
     std::vector<P2> pts;
     std::vector<OccluderFeature> feats;
     for (int k = 0; k < 3; ++k) {
       if (o[k] == 0) {
-        pts.push_back(wc[k]);
+        pts.push_back(wc(k));
         feats.push_back(vertex_feature(t.v[k]));
       }
       const int j = (k + 1) % 3;
@@ -226,15 +248,16 @@ std::vector<CriticalInterval> split_ev_interval(const Scene& scene, const SceneA
     const OccluderFeature* feature;
   };
   std::vector<Endpoint> eps;
-  auto add_ep = [&](const P2& x, int tri, const OccluderFeature& f) {
+  auto add_ep = [&](const P2& x, const I& ia, const I& ib, int tri, const OccluderFeature& f) {
+    if (endpoint_certainly_dropped(ia, ib, nn_lo, it0, it1)) return;
     const Exact sigma = x.alpha + x.beta;
     if (!(sigma >= nn || CGAL::sign(sigma) < 0)) return;
     const Exact t = x.beta / sigma;
     if (t > interval.t0 && t < interval.t1) eps.push_back({t, sigma, tri, &f});
   };
-  for (const auto& sg : segs) {
-    add_ep(sg.p, sg.triangle, sg.pf);
-    add_ep(sg.q, sg.triangle, sg.qf);
+  for (std::size_t i = 0; i < segs.size(); ++i) {
+    add_ep(segs[i].p, seg_box[i][0], seg_box[i][1], segs[i].triangle, segs[i].pf);
+    add_ep(segs[i].q, seg_box[i][2], seg_box[i][3], segs[i].triangle, segs[i].qf);
   }
   std::sort(eps.begin(), eps.end(), [](const Endpoint& x, const Endpoint& y) { return x.t < y.t; });
   std::vector<Exact> bps{interval.t0};
@@ -257,15 +280,6 @@ std::vector<CriticalInterval> split_ev_interval(const Scene& scene, const SceneA
   // What the line passes through at a crossing breakpoint (the first found); endpoint breakpoints are looked
   // up in `eps` (sorted by t) when a piece ends there.
   std::map<Exact, CriticalEnd> crossing_at;
-  // Interval enclosures of the segments' ends (alpha, beta of p, then of q), for the crossing filter below.
-  std::vector<std::array<I, 4>> seg_box(segs.size());
-  for (std::size_t i = 0; i < segs.size(); ++i) {
-    const Exact* c[4] = {&segs[i].p.alpha, &segs[i].p.beta, &segs[i].q.alpha, &segs[i].q.beta};
-    for (int k = 0; k < 4; ++k) {
-      const auto e = enclosing_interval(*c[k]);
-      seg_box[i][k] = I(e.first, e.second);
-    }
-  }
   // Interval filter of the exact crossing test: true only when the segments' parameters u, v (below) are
   // certainly outside [0, 1] (the exact test then skips the pair too); the denominator must exclude 0.
   auto certainly_apart = [&](std::size_t fi, std::size_t gi) {
@@ -416,7 +430,13 @@ std::vector<CriticalInterval> split_ev_interval(const Scene& scene, const SceneA
     iv.front_object = pieces[i].front;
     iv.back_object = pieces[i].back;
     iv.sample_t = (pieces[i].t0 + pieces[j].t1) / 2;
-    if (j > i) {
+    // The objects are constant on each piece's open interval (the split's invariant): a merged midpoint
+    // strictly inside one of the pieces has the pieces' objects, so only a midpoint on a piece boundary
+    // needs its own rays.
+    bool inside_a_piece = false;
+    for (std::size_t k = i; k <= j && !inside_a_piece; ++k)
+      inside_a_piece = pieces[k].t0 < iv.sample_t && iv.sample_t < pieces[k].t1;
+    if (j > i && !inside_a_piece) {
       const auto [f, g] = objects_at(iv.sample_t);
       const std::int64_t fid = f >= 0 ? scene.triangles[f].id : -1, gid = g >= 0 ? scene.triangles[g].id : -1;
       if (fid != iv.front_object || gid != iv.back_object)

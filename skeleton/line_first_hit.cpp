@@ -164,10 +164,11 @@ bool rational_vector(const Vec3<RootNumber>& v, Vec3<Exact>* out) {
 }
 
 std::int64_t line_first_hit(const Scene& scene, const TriangleIndex& index, const Box3& box,
-                            const Vec3<RootNumber>& origin, const Vec3<RootNumber>& dir) {
+                            const Vec3<RootNumber>& origin, const Vec3<RootNumber>& dir,
+                            const RayOriginOnEdgeLine& origin_on) {
   Vec3<Exact> o, d;
   if (rational_vector(origin, &o) && rational_vector(dir, &d)) {
-    const RayHit hit = ray_first_hit(scene, index, box, o, d);
+    const RayHit hit = ray_first_hit(scene, index, box, o, d, origin_on);
     return hit.triangle >= 0 ? scene.triangles[hit.triangle].id : -1;
   }
   // In Q(sqrt D): the candidates of the interval cover of the ray (kernel/ray_first_hit.hpp; every triangle

@@ -2,6 +2,7 @@
 // The first scene triangle met by an open ray along a line with exact coordinates in Q or Q(sqrt D) (the
 // lines of the 3D visibility skeleton's nodes; docs/theory.md section 9, "Maximal free segments").
 #include "kernel/number_types.hpp"
+#include "kernel/ray_first_hit.hpp"
 #include "kernel/root_number.hpp"
 #include "kernel/scene.hpp"
 #include "kernel/triangle_index.hpp"
@@ -19,8 +20,12 @@ namespace exactvis {
 // rays in Q(sqrt D) (EEEE node lines with an irrational root) take the candidates of the same interval cover
 // (ray_cover_candidates; all triangles only when no direction enclosure excludes 0), reject most by an
 // interval filter and decide the rest exactly in Q(sqrt D). Cost: O(32 log n + k) plus the exact tests.
+// `origin_on`: the edge line the origin is known to lie on, if any (passed to ray_first_hit for rational
+// rays, which then need no exact arithmetic for the structural zeros of that edge's planes; the result is
+// the same with or without it, wrong knowledge gives wrong answers).
 std::int64_t line_first_hit(const Scene& scene, const TriangleIndex& index, const Box3& box,
-                            const Vec3<RootNumber>& origin, const Vec3<RootNumber>& dir);
+                            const Vec3<RootNumber>& origin, const Vec3<RootNumber>& dir,
+                            const RayOriginOnEdgeLine& origin_on = {});
 
 // One open segment (from, to) (from != to; coordinates rational or in one Q(sqrt D)) tested against many
 // closed triangles: its interval enclosures and, when rational, its rational endpoints are computed once.

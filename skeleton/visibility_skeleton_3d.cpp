@@ -68,13 +68,22 @@ NodeLine eee_end_line(const Scene& scene, const EeeEvent& ev, const R& t, bool k
 void span_node(const Scene& scene, const TriangleIndex& index, const Box3& box, const NodeLine& line, bool ends,
                SkeletonNode& node) {
   std::vector<Vec3<R>> pts = line.family_points;
+  // The edge line each point lies on by construction ({} when not known): rays from it need no exact
+  // arithmetic for that edge's planes (kernel/ray_first_hit).
+  std::vector<RayOriginOnEdgeLine> on(pts.size());
   const ExtremalLineKey& k = node.key;
-  for (int i = 0; i < k.vertex_count(); ++i) pts.push_back(lift(scene.vertices[k.vertices[i]]));
+  for (int i = 0; i < k.vertex_count(); ++i) {
+    pts.push_back(lift(scene.vertices[k.vertices[i]]));
+    on.emplace_back();
+  }
   const int edges = k.kind == ExtremalLineKind::EEP ? 2 : k.edge_count();  // EEP: edge 3 is met at infinity
   for (int i = 0; i < edges; ++i) {
     const auto x = meet_edge_line(line.origin, line.dir, lift(scene.vertices[k.edges[i][0]]),
                                   lift(scene.vertices[k.edges[i][1]]));
-    if (x) pts.push_back(*x);
+    if (x) {
+      pts.push_back(*x);
+      on.push_back({k.edges[i][0], k.edges[i][1]});
+    }
   }
   // Order along the line: every point is origin + lambda dir, so one axis with dir_k != 0 orders them
   // (lambda dir_k = p_k - origin_k; negated when dir_k < 0).
@@ -91,8 +100,8 @@ void span_node(const Scene& scene, const TriangleIndex& index, const Box3& box, 
   node.from = pts[lo];
   node.to = pts[hi];
   if (!ends) return;
-  node.ends[0] = line_first_hit(scene, index, box, node.from, -line.dir);
-  node.ends[1] = line_first_hit(scene, index, box, node.to, line.dir);
+  node.ends[0] = line_first_hit(scene, index, box, node.from, -line.dir, on[lo]);
+  node.ends[1] = line_first_hit(scene, index, box, node.to, line.dir, on[hi]);
 }
 
 double seconds_since(std::chrono::steady_clock::time_point t) {

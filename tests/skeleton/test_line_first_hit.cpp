@@ -153,6 +153,7 @@ Vec3<RootNumber> to_root(const QD3& v, const Q& D) { return {to_root(v[0], D), t
 // weight and rational directions (the node lines through vertices and VEE lines).
 struct Cases {
   int rays = 0, hits = 0, coplanar = 0, segments = 0, segment_hits = 0;
+  int on_edge = 0;  // rays also asked with the edge line their origin lies on (RayOriginOnEdgeLine)
 };
 
 Cases run_scene(const Scene& scene, unsigned seed, int count, bool rational = false) {
@@ -178,7 +179,8 @@ Cases run_scene(const Scene& scene, unsigned seed, int count, bool rational = fa
     const SceneTriangle& t = scene.triangles[pick_t(rng)];
     const QD3 a = point(t.v[0]), b = point(t.v[1]), cc = point(t.v[2]);
     QD3 o, d;
-    switch (kind(rng)) {
+    const int k = kind(rng);
+    switch (k) {
       case 0:  // random
         o = between(point(pick_v(rng)), point(pick_v(rng)));
         d = random_dir();
@@ -212,6 +214,11 @@ Cases run_scene(const Scene& scene, unsigned seed, int count, bool rational = fa
     const std::int64_t want = oracle_first_hit(f, scene, o, d);
     const std::int64_t got = line_first_hit(scene, index, box, to_root(o, f.D), to_root(d, f.D));
     EXPECT_EQ(got, want) << "ray " << i << " (seed " << seed << ")";
+    if (k == 2 || k == 5) {  // the origin lies on the line of t's edge (v0, v1): the same answer with that knowledge
+      ++c.on_edge;
+      EXPECT_EQ(line_first_hit(scene, index, box, to_root(o, f.D), to_root(d, f.D), {t.v[0], t.v[1]}), want)
+          << "ray " << i << " with its origin's edge line (seed " << seed << ")";
+    }
     c.hits += want >= 0;
     {
       const SceneTriangle& u = scene.triangles[pick_t(rng)];
@@ -270,6 +277,7 @@ TEST(LineFirstHit, RationalRaysAndSegmentsMatchTheOracle) {
   skeleton_test::add_box(mesh, {20, 20, 28}, {26, 26, 34}, "box2");
   const Cases m = run_scene(mesh, 500, 300, true);
   EXPECT_GT(m.rays, 250);
+  EXPECT_GT(m.on_edge, 50);
   EXPECT_GT(m.hits, m.rays / 10);
   EXPECT_LT(m.hits, m.rays);
   EXPECT_GT(m.segment_hits, m.segments / 1000);
