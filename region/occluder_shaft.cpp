@@ -226,14 +226,20 @@ TrackedPolygon clip_tracked(const TrackedPolygon& in, const Plane3& plane) {
 // vector of a directed line does not depend on the two points chosen on it): from the double corners in the
 // fixed layer when `corners` is given and it fits, else from the rational corners. Only the edges on the
 // polygon planes need the rational clipped points.
+// inside_source / inside_target: the caller proved the three corners strictly inside that polygon plane, so
+// the triangle (convex) is, and clipping by that plane keeps it as it is (clip_polygon keeps vertices of value
+// > 0 in order and inserts none) and it cannot lie in that plane: the clip and the test are skipped.
 std::optional<ShaftOccluder> clipped_occluder(const std::array<RationalPoint3, 3>& tri, const StabbingPair& pair,
-                                              const std::array<Point3, 3>* corners) {
+                                              const std::array<Point3, 3>* corners, bool inside_source = false,
+                                              bool inside_target = false) {
   TrackedPolygon clipped{{tri[0], tri[1], tri[2]}, {0, 1, 2}};
-  clipped = clip_tracked(clipped, pair.source_plane);
-  clipped = clip_tracked(clipped, pair.target_plane);
+  if (!inside_source) clipped = clip_tracked(clipped, pair.source_plane);
+  if (!inside_target) clipped = clip_tracked(clipped, pair.target_plane);
   const Polygon3& poly = clipped.points;
   if (is_degenerate(poly)) return std::nullopt;
-  if (lies_in_plane(poly, pair.source_plane) || lies_in_plane(poly, pair.target_plane)) return std::nullopt;
+  if ((!inside_source && lies_in_plane(poly, pair.source_plane)) ||
+      (!inside_target && lies_in_plane(poly, pair.target_plane)))
+    return std::nullopt;
   std::array<std::optional<ConeVector6>, 3> triangle_edge;
   auto edge_functional = [&](int k) -> const ConeVector6& {
     auto& f = triangle_edge[static_cast<std::size_t>(k)];
@@ -292,10 +298,12 @@ std::vector<ShaftOccluder> occluders_among(const Scene& scene, const std::vector
     if (culled) continue;
     // Strictly inside both polygon planes (planes[0], planes[1]): the clipping shortcut applies. Only the
     // few survivors of the culling pay these signs.
-    bool inside_wedge = true;
-    for (std::size_t k = 0; k < 2 && inside_wedge; ++k)
-      for (std::size_t i = 0; i < 3 && inside_wedge; ++i) inside_wedge = planes[k].side(c[i]) == Sign::Positive;
-    auto occ = inside_wedge ? unclipped_occluder(c) : clipped_occluder(triangle_points(scene, idx), pair, &c);
+    std::array<bool, 2> inside{true, true};  // the three corners strictly inside planes[k]
+    for (std::size_t k = 0; k < 2; ++k)
+      for (std::size_t i = 0; i < 3 && inside[k]; ++i) inside[k] = planes[k].side(c[i]) == Sign::Positive;
+    const bool inside_wedge = inside[0] && inside[1];
+    auto occ = inside_wedge ? unclipped_occluder(c)
+                            : clipped_occluder(triangle_points(scene, idx), pair, &c, inside[0], inside[1]);
     if (occ) {
       occ->triangle = idx;
       occ->corners_d = c;
