@@ -12,8 +12,9 @@
 // evaluated, by aspect/direction_aspect at an exact rational sample (the other cells take a neighbouring
 // face's aspect); aspect/aspect_regions merges cells into regions. Free EEE arcs (conics, theory §10.11) are
 // cut at the circles (aspect/eee_arc_insertion) and split the faces they cross; EEE arcs lying on a great circle
-// (three edges parallel to one plane) are handled like EV arcs. Models whose EEE arcs fall outside the subset
-// of §10.11 are refused with one line.
+// (three edges parallel to one plane) are handled like EV arcs; an EEE arc crossing a free arc of a circle at an
+// irrational direction gives that point the intersection of the aspects of the circle's pieces next to it.
+// Models whose EEE arcs fall outside the subset of §10.11 are refused with one line.
 #include "aspect/aspect_graph_3d.hpp"
 #include "kernel/scene.hpp"
 
