@@ -16,9 +16,8 @@ namespace {
 // The loop of box_may_be_visible; `pair_query` decides one stabbing pair against the occluders.
 // options.split_budget (> 0) bounds the splits of the whole test: each pair gets what the earlier ones left.
 template <class PairQuery>
-bool box_reached(const RationalBox3& cell, const Box3& box, const VisibilityOptions& options, VisibilityStats& stats,
-                 bool* gave_up, const PairQuery& pair_query) {
-  if (gave_up) *gave_up = false;
+BoxReach box_reached(const RationalBox3& cell, const Box3& box, const VisibilityOptions& options,
+                     VisibilityStats& stats, const PairQuery& pair_query) {
   VisibilityOptions pair_options = options;
   const std::int64_t splits_before = stats.splits;
   const RationalBox3 b = exact_box(box);
@@ -41,37 +40,31 @@ bool box_reached(const RationalBox3& cell, const Box3& box, const VisibilityOpti
             ++stats.stabbing_pairs;
             if (options.split_budget > 0) {
               pair_options.split_budget = options.split_budget - (stats.splits - splits_before);
-              if (pair_options.split_budget <= 0) {  // spent by the earlier pairs
-                if (gave_up) *gave_up = true;
-                return true;
-              }
+              if (pair_options.split_budget <= 0) return {true, true};  // spent by the earlier pairs
             }
             const PairVisibility pv = pair_query(pair, pair_options);
             accumulate(stats, pv.stats);
-            if (pv.witness) return true;
-            if (pv.gave_up) {  // no proof for this pair: the box may be visible (descending is sound)
-              if (gave_up) *gave_up = true;
-              return true;
-            }
+            if (pv.witness) return {true, false};
+            if (pv.gave_up) return {true, true};  // no proof for this pair: the box may be visible (descending is sound)
           }
         }
     }
-  return false;
+  return {false, false};
 }
 
 }  // namespace
 
-bool box_may_be_visible(const Scene& scene, const std::vector<std::int64_t>& occluders, const RationalBox3& cell,
-                        const Box3& box, const VisibilityOptions& options, VisibilityStats& stats, bool* gave_up) {
-  return box_reached(cell, box, options, stats, gave_up, [&](const StabbingPair& pair, const VisibilityOptions& o) {
+BoxReach box_may_be_visible(const Scene& scene, const std::vector<std::int64_t>& occluders, const RationalBox3& cell,
+                            const Box3& box, const VisibilityOptions& options, VisibilityStats& stats) {
+  return box_reached(cell, box, options, stats, [&](const StabbingPair& pair, const VisibilityOptions& o) {
     return pair_visibility(scene, occluders, -1, pair, o);
   });
 }
 
-bool box_may_be_visible(const Scene& scene, const HierarchyCandidates& occluders, const Box3& query_box,
-                        const RationalBox3& cell, const Box3& box, const VisibilityOptions& options,
-                        VisibilityStats& stats, bool* gave_up) {
-  return box_reached(cell, box, options, stats, gave_up, [&](const StabbingPair& pair, const VisibilityOptions& o) {
+BoxReach box_may_be_visible(const Scene& scene, const HierarchyCandidates& occluders, const Box3& query_box,
+                            const RationalBox3& cell, const Box3& box, const VisibilityOptions& options,
+                            VisibilityStats& stats) {
+  return box_reached(cell, box, options, stats, [&](const StabbingPair& pair, const VisibilityOptions& o) {
     return pair_visibility(scene, occluders, query_box, -1, pair, o);
   });
 }

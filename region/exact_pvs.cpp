@@ -224,15 +224,15 @@ CellPvs exact_cell_pvs(const PvsContext& context, const RationalBox3& cell, cons
     VisibilityOptions box_options = options.query;
     box_options.split_budget = static_cast<std::int64_t>(std::max(0, options.box_splits_per_triangle)) *
                                (node.end - node.begin);
-    bool gave_up = false;
-    const bool hidden =
-        !box_may_be_visible(scene, outside, enclosing_box(corners), cell, node.box, box_options, stats, &gave_up);
+    const BoxReach reach =
+        box_may_be_visible(scene, outside, enclosing_box(corners), cell, node.box, box_options, stats);
+    const bool hidden = !reach.may_be_visible;
     stats.exact_evaluations = 0;
     std::lock_guard lock(box_stats_mutex);
     accumulate(box_stats, stats);
     ++boxes_tested;
     boxes_culled += hidden ? 1 : 0;
-    boxes_given_up += gave_up ? 1 : 0;
+    boxes_given_up += reach.gave_up ? 1 : 0;
     return hidden;
   };
   auto cull = [&](const BvhNode& node, char how) {

@@ -121,9 +121,9 @@ TEST(BoxVisibility, QuadFacesAgreeWithAllFacePairsAndTheOracle) {
         if (pos < node.begin || pos >= node.end) ids.push_back(static_cast<std::int64_t>(t));
       }
       VisibilityStats stats;
-      bool gave_up = true;
-      const bool may = box_may_be_visible(c.scene, ids, c.cell, node.box, {}, stats, &gave_up);
-      EXPECT_FALSE(gave_up);
+      const BoxReach reach = box_may_be_visible(c.scene, ids, c.cell, node.box, {}, stats);
+      const bool may = reach.may_be_visible;
+      EXPECT_FALSE(reach.gave_up);
       EXPECT_EQ(may, reached_by_some_face_pair(c.cell, node.box, occluders)) << "node " << i;
       if (!may) {
         EXPECT_FALSE(oracle_finds_a_free_segment(c.scene, bvh, node, c.cell, ++seed)) << "node " << i;
@@ -150,14 +150,14 @@ TEST(BoxVisibility, SplitBudgetOnlyEverGivesUp) {
         if (pos < node.begin || pos >= node.end) ids.push_back(static_cast<std::int64_t>(t));
       }
       VisibilityStats full_stats;
-      const bool full = box_may_be_visible(c.scene, ids, c.cell, node.box, {}, full_stats);
+      const bool full = box_may_be_visible(c.scene, ids, c.cell, node.box, {}, full_stats).may_be_visible;
       for (const std::int64_t budget : {1, 7, 40, 300}) {
         VisibilityOptions o;
         o.split_budget = budget;
         VisibilityStats stats;
-        bool gave_up = false;
-        const bool may = box_may_be_visible(c.scene, ids, c.cell, node.box, o, stats, &gave_up);
-        if (gave_up) {
+        const BoxReach reach = box_may_be_visible(c.scene, ids, c.cell, node.box, o, stats);
+        const bool may = reach.may_be_visible;
+        if (reach.gave_up) {
           EXPECT_TRUE(may) << "a test that gave up must not claim hidden, node " << i;
           ++given_up;
           continue;
@@ -227,9 +227,12 @@ TEST(BoxVisibility, CoplanarPartnersAreConvexQuadsAndMergingKeepsTheAnswers) {
       };
       const Box3 query = enclosing_box({cell.lo, cell.hi, to_rational(node.box.lo), to_rational(node.box.hi)});
       VisibilityStats sa, sb;
-      const bool a = box_may_be_visible(scene, HierarchyCandidates{index, &scene, &bvh, inside}, query, cell, node.box, {}, sa);
+      const bool a =
+          box_may_be_visible(scene, HierarchyCandidates{index, &scene, &bvh, inside}, query, cell, node.box, {}, sa)
+              .may_be_visible;
       const bool b = box_may_be_visible(scene, HierarchyCandidates{index, &scene, &bvh, inside, &partner}, query, cell,
-                                        node.box, {}, sb);
+                                        node.box, {}, sb)
+                         .may_be_visible;
       EXPECT_EQ(a, b) << "seed " << seed << " node " << i;
       hidden += a ? 0 : 1;
     }

@@ -269,9 +269,10 @@ TEST(ShaftGather, QueriesThroughTheHierarchyEqualThePlainIndex) {
       for (const std::int64_t t : index.candidates_in_box(query))
         if (!inside(t)) occluders.push_back(t);
       VisibilityStats sa, sb;
-      const bool a = box_may_be_visible(scene, occluders, cell, node.box, {}, sa);
+      const bool a = box_may_be_visible(scene, occluders, cell, node.box, {}, sa).may_be_visible;
       const bool b = box_may_be_visible(scene, HierarchyCandidates{index, &scene, &bvh, inside}, query, cell,
-                                        node.box, {}, sb);
+                                        node.box, {}, sb)
+                         .may_be_visible;
       ASSERT_EQ(a, b) << "trial " << trial << " node " << i;
       expect_same_stats(sa, sb);
     }
