@@ -1,12 +1,7 @@
 #include "shadows/backprojection.hpp"
 
 #include "kernel/predicates.hpp"
-#include "shadows/exact_planar_kernel.hpp"
-
-#include <CGAL/Boolean_set_operations_2.h>
-#include <CGAL/Polygon_2.h>
-#include <CGAL/Polygon_set_2.h>
-#include <CGAL/Polygon_with_holes_2.h>
+#include "shadows/convex_difference.hpp"
 
 #include <algorithm>
 #include <array>
@@ -17,34 +12,28 @@
 namespace exactvis::shadows {
 namespace {
 
-using Polygon2 = CGAL::Polygon_2<PlanarKernel>;
-using PolygonWithHoles2 = CGAL::Polygon_with_holes_2<PlanarKernel>;
-using PolygonSet2 = CGAL::Polygon_set_2<PlanarKernel>;
-
-Polygon2 to_polygon2(const PlaneChart& chart, const region::Polygon3& poly) {
-  Polygon2 out;
-  for (const auto& v : poly) {
-    const PlanarPoint q = to_planar(chart.to_2d(v));
-    if (out.size() > 0 && (out.container().back() == q || out.container().front() == q)) continue;
-    out.push_back(q);
-  }
-  if (out.size() >= 3 && out.orientation() == CGAL::CLOCKWISE) out.reverse_orientation();
+// The polygon's vertices in the chart (exact; the chart drops one coordinate).
+std::vector<ChartPoint> to_chart(const PlaneChart& chart, const region::Polygon3& poly) {
+  std::vector<ChartPoint> out;
+  out.reserve(poly.size());
+  for (const auto& v : poly) out.push_back(chart.to_2d(v));
   return out;
 }
 
-region::Polygon3 to_polygon3(const PlaneChart& chart, const Polygon2& poly) {
+region::Polygon3 to_polygon3(const PlaneChart& chart, const std::vector<ChartPoint>& poly) {
   region::Polygon3 out;
-  for (auto it = poly.vertices_begin(); it != poly.vertices_end(); ++it) {
-    const auto p = from_planar(*it);
-    out.push_back(chart.to_3d(p[0], p[1]));
-  }
+  out.reserve(poly.size());
+  for (const auto& p : poly) out.push_back(chart.to_3d(p[0], p[1]));
   return out;
 }
 
-Exact area_of(const PolygonWithHoles2& pwh) {
-  PlanarKernel::FT a = pwh.outer_boundary().area();
-  for (auto h = pwh.holes_begin(); h != pwh.holes_end(); ++h) a += h->area();  // holes are clockwise
-  return from_planar_ft(a);
+void add_pieces(const PlaneChart& chart, const ChartRegion& region, VisibleLightPart& part) {
+  for (const auto& pwh : region.pieces) {
+    VisiblePolygon vp;
+    vp.outer = to_polygon3(chart, pwh.outer);
+    for (const auto& h : pwh.holes) vp.holes.push_back(to_polygon3(chart, h));
+    part.pieces.push_back(std::move(vp));
+  }
 }
 
 // The orient3d signs of a backprojection's pre-tests, where one point may be the (rational) point p: first
@@ -119,12 +108,13 @@ Backprojection backproject_with(const Scene& scene, const std::vector<int>& ligh
     part.light_triangle = li;
     part.chart = chart_of_triangle(lt[0], lt[1], lt[2]);
     const region::Polygon3 light_poly(lt.begin(), lt.end());
-    const Polygon2 light2 = to_polygon2(part.chart, light_poly);
-    part.area_2d = from_planar_ft(light2.area());
+    const std::vector<ChartPoint> light2 = normalized_convex_polygon(to_chart(part.chart, light_poly));
+    part.area_2d = ((light2[1][0] - light2[0][0]) * (light2[2][1] - light2[0][1]) -
+                    (light2[1][1] - light2[0][1]) * (light2[2][0] - light2[0][0])) / 2;
     std::vector<RationalPoint3> hull(lt.begin(), lt.end());
     hull.push_back(p);
     const Box3 box = region::enclosing_box(hull);
-    std::vector<Polygon2> hidden;
+    std::vector<std::vector<ChartPoint>> hidden;
     std::vector<std::int64_t> hidden_by;
     bool covered = false;  // one hidden polygon is the whole triangle (then it is the only one kept)
     Vec3<BoundedDouble> lb[3];
@@ -176,8 +166,8 @@ Backprojection backproject_with(const Scene& scene, const std::vector<int>& ligh
         poly = region::clip_polygon(poly, inner[k] == Sign::Positive ? side : side.flipped());
       }
       if (region::is_degenerate(poly)) continue;
-      Polygon2 h2 = to_polygon2(part.chart, poly);
-      if (h2.size() < 3 || h2.area() == 0) continue;
+      std::vector<ChartPoint> h2 = normalized_convex_polygon(to_chart(part.chart, poly));
+      if (h2.empty()) continue;
       // Fast path: one cone covering the whole light triangle. The hidden polygon is a convex subset of the
       // triangle, so it is the whole triangle iff it holds the three corners, iff the three corners are among
       // its vertices (each clip keeps a vertex on its closed side). It alone is the proof.
@@ -197,23 +187,31 @@ Backprojection backproject_with(const Scene& scene, const std::vector<int>& ligh
       part.visible_area_2d = 0;
       blockers.insert(hidden_by.front());
     } else if (hidden.empty()) {
-      part.pieces.push_back({to_polygon3(part.chart, light2), {}});
+      add_pieces(part.chart, cell_union_boundary({light2}), part);
       part.visible_area_2d = part.area_2d;
     } else {
-      PolygonSet2 hidden_set;
-      hidden_set.join(hidden.begin(), hidden.end());
-      PolygonSet2 visible(light2);
-      visible.difference(hidden_set);
-      std::vector<PolygonWithHoles2> pwhs;
-      visible.polygons_with_holes(std::back_inserter(pwhs));
-      part.visible_area_2d = 0;
-      for (const auto& pwh : pwhs) {
-        VisiblePolygon vp;
-        vp.outer = to_polygon3(part.chart, pwh.outer_boundary());
-        for (auto h = pwh.holes_begin(); h != pwh.holes_end(); ++h) vp.holes.push_back(to_polygon3(part.chart, *h));
-        part.visible_area_2d += area_of(pwh);
-        part.pieces.push_back(std::move(vp));
+      // The light triangle minus the union of the convex hidden polygons, in canonical form
+      // (shadows/convex_difference.hpp; CGAL's Boolean operations are its oracle in the tests).
+      // Largest first (double estimates; the result does not depend on the order): later, smaller ones then
+      // mostly fall inside what is already hidden and split no cell.
+      std::vector<std::pair<double, std::size_t>> order;
+      for (std::size_t k = 0; k < hidden.size(); ++k) {
+        double a2 = 0;
+        const auto& h = hidden[k];
+        for (std::size_t i = 0; i < h.size(); ++i) {
+          const auto& p0 = h[i];
+          const auto& p1 = h[(i + 1) % h.size()];
+          a2 += CGAL::to_double(p0[0]) * CGAL::to_double(p1[1]) - CGAL::to_double(p0[1]) * CGAL::to_double(p1[0]);
+        }
+        order.push_back({-a2, k});
       }
+      std::sort(order.begin(), order.end());
+      std::vector<std::vector<ChartPoint>> sorted;
+      sorted.reserve(hidden.size());
+      for (const auto& [a, k] : order) sorted.push_back(std::move(hidden[k]));
+      const ConvexDifference visible = convex_difference(light2, sorted);
+      add_pieces(part.chart, visible.region, part);
+      part.visible_area_2d = visible.region.area;
       // A blocker counts when its hidden polygon has positive area inside the light triangle.
       for (std::size_t k = 0; k < hidden.size(); ++k) blockers.insert(hidden_by[k]);
     }

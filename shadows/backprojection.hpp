@@ -6,8 +6,9 @@
 // the open segment (p, q) meets no closed scene triangle. The points hidden by one blocker T (p not in T's
 // plane, T not in the light triangle's plane) are the light points in the closed cone from p over T beyond
 // T's plane: the light triangle clipped by four planes (exact, region::clip_polygon). The visible part is
-// the light triangle minus the union of these convex polygons (CGAL Boolean set operations, exact, in the
-// triangle's PlaneChart). Sets of zero area are ignored (a blocker through p, or in the light's plane, hides
+// the light triangle minus the union of these convex polygons (shadows/convex_difference, exact, in the
+// triangle's PlaneChart), in the canonical form of shadows/cell_union_boundary (loops from their smallest
+// chart vertex, no collinear vertices, pieces and holes sorted), which depends only on the point set. Sets of zero area are ignored (a blocker through p, or in the light's plane, hides
 // at most a segment of the light): classes and fractions are by area.
 #include "kernel/number_types.hpp"
 #include "kernel/scene.hpp"
@@ -53,7 +54,7 @@ struct Backprojection {
 
 // Input: scene, its index, the light (indices into Scene::triangles, each of positive area), a point p.
 // Output: the backprojection (exact). Cost: per light triangle, O(k) clipping for the k triangles meeting
-// the bounding box of p and the triangle, plus the Boolean union of the hidden polygons (O(k log k) typical).
+// the bounding box of p and the triangle, plus the convex difference of the hidden polygons (each splits the cells it meets).
 Backprojection backproject(const Scene& scene, const TriangleIndex& index, const std::vector<int>& light,
                            const RationalPoint3& p);
 

@@ -380,11 +380,9 @@ ReceiverArrangement build(const std::vector<ArrangementCurve>& curves, const std
   return out;
 }
 
-// Debugging aid: with EXACTVIS_DUMP_ARRANGEMENTS=DIR set, the curves of every receiver on which CGAL's
-// conic traits failed are written to DIR/arrangement_<n>.txt (read_arrangement_curves' format: per curve a
-// line "curve <points> <0|1>", the conic's six coefficients when 1, then one "u v" line per point; exact
-// rationals). Off by default: nothing is written.
-void dump_curves(const std::vector<ArrangementCurve>& curves, const std::string& why) {
+}  // namespace
+
+void dump_arrangement_curves(const std::vector<ArrangementCurve>& curves, const std::string& why) {
   static std::atomic<int> counter{0};
   const char* dir = std::getenv("EXACTVIS_DUMP_ARRANGEMENTS");
   if (dir == nullptr || *dir == 0) return;
@@ -400,8 +398,6 @@ void dump_curves(const std::vector<ArrangementCurve>& curves, const std::string&
   }
 }
 
-}  // namespace
-
 ReceiverArrangement receiver_arrangement(const std::vector<ArrangementCurve>& curves,
                                          const std::vector<std::array<Exact, 2>>& queries) {
   // Aggregated sweep, then incremental insertion on the arcs as given; then the certified polyline
@@ -416,7 +412,7 @@ ReceiverArrangement receiver_arrangement(const std::vector<ArrangementCurve>& cu
     }
   }
   ReceiverArrangement poly = polyline_arrangement(curves, queries);
-  dump_curves(curves, first + (poly.failed ? "; " + poly.failure : "; polyline certified"));
+  dump_arrangement_curves(curves, first + (poly.failed ? "; " + poly.failure : "; polyline certified"));
   if (!poly.failed) return poly;
   for (const bool incremental : {false, true}) {
     try {

@@ -79,4 +79,11 @@ struct ReceiverArrangement {
 ReceiverArrangement receiver_arrangement(const std::vector<ArrangementCurve>& curves,
                                          const std::vector<std::array<Exact, 2>>& queries = {});
 
+// Debugging aid: with EXACTVIS_DUMP_ARRANGEMENTS=DIR set, writes the curves to DIR/arrangement_<n>.txt (n a
+// process-wide counter): a first line "# why", then per curve a line "curve <points> <0|1>", the conic's six
+// coefficients when 1, then one "u v" line per point (exact rationals; tests/shadows/test_polyline_arrangement
+// reads them back). Without the variable it does nothing. receiver_arrangement calls it for every receiver
+// where CGAL's conic traits failed, compute_shadows for every receiver whose arrangement failed.
+void dump_arrangement_curves(const std::vector<ArrangementCurve>& curves, const std::string& why);
+
 }  // namespace exactvis::shadows

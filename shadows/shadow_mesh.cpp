@@ -15,6 +15,8 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <iostream>
+#include <mutex>
 #include <optional>
 #include <set>
 #include <stdexcept>
@@ -89,6 +91,7 @@ ShadowResult compute_shadows(const Scene& scene, const ShadowOptions& options) {
       polyline_arrangements{0}, polyline_pieces{0}, cross_checked{0}, cross_mismatches{0},
       uncertified_samples{0}, box_candidates{0}, shaft_candidates{0}, shaft_outside{0};
   ProgressBar bar("shadows: receivers", receivers.size(), options.progress);
+  std::mutex warn_mutex;
   for_each_index(receivers.size(), options.parallel, 1, [&](std::size_t i) {
     ReceiverShadows& out = res.receivers[i];
     out.triangle = receivers[i];
@@ -137,9 +140,23 @@ ShadowResult compute_shadows(const Scene& scene, const ShadowOptions& options) {
     if (!arr.failed && unlocated(arr) && !arr.polyline) {
       ReceiverArrangement poly = polyline_arrangement(arcs, queries);
       if (!poly.failed) arr = std::move(poly);
+      else arr.failure = "a triangulation sample not located in CGAL's conic arrangement; " + poly.failure;
     }
-    if (unlocated(arr)) arr.failed = true;
+    if (!arr.failed && unlocated(arr)) {
+      arr.failed = true;
+      if (arr.failure.empty()) arr.failure = "a triangulation sample not located in the arrangement";
+    }
     if (arr.failed) {
+      // Never silent: counted in the stats, said on stderr (with the receiver's id), and the curves dumped
+      // under EXACTVIS_DUMP_ARRANGEMENTS.
+      {
+        const std::string why = "receiver triangle " + std::to_string(out.triangle) + " (id " + std::to_string(rid) +
+                                "): exact arrangement failed (" + arr.failure + ")";
+        std::lock_guard<std::mutex> lock(warn_mutex);
+        std::cerr << "exactvis shadows: warning: " << why
+                  << "; its faces are the triangulation's (EEE arcs as chords)\n";
+        dump_arrangement_curves(arcs, why);
+      }
       // CGAL's conic traits failed (see conic_arrangement.hpp): the faces are the triangulation's, EEE arcs
       // as chords (exact chord-polygon areas; each sample's class is exact for the sample).
       out.arrangement_failed = true;
