@@ -86,6 +86,12 @@ struct PvsOptions {
                                       // §5.8); 0: no limit
   bool occluder_proofs = true;  // method `exact`: try the single wall / convex solid proofs of method
                                 // `conservative` (region/single_occluder_culling.hpp) before the line-space tests
+  bool back_faces = true;       // method `exact`: a triangle of a closed convex solid apart from the cell whose
+                                // plane has the whole cell on the solid's side is hidden by that solid
+                                // (region/back_face_culling.hpp, docs/theory.md §5.8), before its rays and query
+  bool back_face_occluders = true;  // method `exact`: such back faces are also dropped from the occluders of the
+                                    // triangle queries and box tests (the solid's other triangles block the same
+                                    // lines up to a null set; same answers, other CSG pieces and witnesses)
   int virtual_occluders = 32;   // method `exact` with the hierarchy: at most this many boxes proved hidden are
                                 // kept as virtual occluders for what lies behind (region/virtual_occluders.hpp);
                                 // 0: none (each node decided on its own, as before)
@@ -112,6 +118,7 @@ struct CellPvsStats {
   std::int64_t boxes_tested = 0;       // exact hidden-box tests run
   std::int64_t boxes_culled = 0;       // boxes proved hidden
   std::int64_t boxes_given_up = 0;     // box tests that spent their split budget (descended; not in JSON files)
+  std::int64_t culled_by_back_faces = 0;  // of culled_by_occluders, back faces of their own solid (not in JSON)
   std::int64_t culled_by_virtual = 0;  // triangles culled by a virtual occluder (a box proved hidden before;
                                        // not in JSON files)
   std::int64_t virtual_occluders = 0;  // boxes registered as virtual occluders (before the cap; not in JSON)

@@ -1,6 +1,7 @@
 #include "region/line_set_csg.hpp"
 
 #include "kernel/segment_triangle_intersection.hpp"
+#include "region/back_face_culling.hpp"
 #include "region/occluder_shaft.hpp"
 #include "region/polyhedral_cone6.hpp"
 #include "region/real_line_test.hpp"
@@ -215,6 +216,7 @@ PairVisibility pair_visibility(const Scene& scene, const HierarchyCandidates& fi
     return segment_is_free(scene, finder, box, p, q, target);
   };
   std::vector<ShaftOccluder> occluders = shaft_occluders(scene, finder, box, target, pair);
+  if (finder.back_faces) finder.back_faces->drop_back_faces(occluders, finder.excluded);
   if (finder.panels) merge_coplanar_panels(occluders, *finder.panels, pair, target, finder.excluded);
   if (finder.partners) merge_coplanar_pairs(occluders, *finder.partners);
   PairQuery query(std::move(occluders), is_free, static_cast<std::uint64_t>(target), pair, options, out.stats);
