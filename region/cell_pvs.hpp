@@ -43,9 +43,7 @@ class PvsContext {
   const ExtrudedScene& extruded() const;
   // The scene's closed convex solids (region/convex_occluder.hpp), computed on first use like extruded().
   const std::vector<ConvexSolid>& solids() const;
-  // The scene's coplanar partner triangles (region/coplanar_partners.hpp), computed on first use like solids().
-  const std::vector<std::int64_t>& coplanar_partners() const;
-  // The scene's coplanar convex panels (region/coplanar_panels.hpp), computed on first use like solids().
+  // The scene's coplanar convex panels and pairs (region/coplanar_panels.hpp), computed on first use like solids().
   const CoplanarPanels& coplanar_panels() const;
 
  private:
@@ -55,10 +53,9 @@ class PvsContext {
   TriangleBvh bvh_;
   double diagonal_ = 0;
   struct Lazy {
-    std::once_flag once, solids_once, partners_once, panels_once;
+    std::once_flag once, solids_once, panels_once;
     ExtrudedScene extruded;
     std::vector<ConvexSolid> solids;
-    std::vector<std::int64_t> partners;
     CoplanarPanels panels;
   };
   std::unique_ptr<Lazy> lazy_ = std::make_unique<Lazy>();
@@ -76,11 +73,11 @@ struct PvsOptions {
                             // one hitting nothing before the face skips the node's hidden-box test (sound:
                             // descending is; docs/theory.md §5.8)
   int min_cull = 16;        // hidden-box tests only for nodes of at least this many triangles
-  bool merge_coplanar = true;  // hidden-box tests and triangle queries subtract coplanar partner triangles as
-                               // one quadrilateral occluder (region/coplanar_partners.hpp; the same line sets,
-                               // §5.8; witnesses found by the CSG may differ from those without)
-  bool merge_panels = true;  // with merge_coplanar: also whole coplanar convex panels (region/coplanar_panels.hpp;
-                             // a wall strip, a roof fan) as one convex occluder, before the pairs (§5.8)
+  bool merge_coplanar = true;  // hidden-box tests and triangle queries subtract coplanar pairs (two triangles
+                               // with a convex union, region/coplanar_panels.hpp) as one convex occluder (the same
+                               // line sets, §5.8; witnesses found by the CSG may differ from those without)
+  bool merge_panels = true;  // with merge_coplanar: whole coplanar convex panels first (a wall strip, a roof fan)
+                             // as one convex occluder, the pairs then for the triangles left (§5.8)
   int box_splits_per_triangle = 0;   // > 0: a node's hidden-box test gives up after this many CSG splits per
                                       // triangle of the node, and the node is descended (sound, docs/theory.md
                                       // §5.8); 0: no limit

@@ -92,10 +92,9 @@ CellPvs exact_cell_pvs(const PvsContext& context, const RationalBox3& cell, cons
   const Scene& scene = context.scene();
   const std::size_t n = scene.triangles.size();
   // Shaft occluders are gathered through the hierarchy (region/hierarchy_candidates.hpp): same answers.
-  // With merge_coplanar, coplanar partner triangles are one quadrilateral occluder in the queries too.
-  // With merge_panels, whole coplanar convex panels too (before the pairs).
-  const CoplanarPanels* panels =
-      options.merge_coplanar && options.merge_panels ? &context.coplanar_panels() : nullptr;
+  // With merge_coplanar, coplanar pairs (2-triangle panels) are one convex occluder in the queries too;
+  // with merge_panels, whole coplanar convex panels first (region/coplanar_panels.hpp).
+  const CoplanarPanels* panels = options.merge_coplanar ? &context.coplanar_panels() : nullptr;
   // Back faces of closed convex solids (region/back_face_culling.hpp): an exact proof from 8 orientations,
   // before everything else a triangle costs; with back_face_occluders also dropped from the queries' occluder
   // lists (the solids' other triangles block the same lines). Both only ever hide (docs/theory.md §5.8).
@@ -105,9 +104,8 @@ CellPvs exact_cell_pvs(const PvsContext& context, const RationalBox3& cell, cons
   const BackFaceCulling* drop_back_faces =
       options.back_face_occluders && back_faces && back_faces->any() ? &*back_faces : nullptr;
   const CandidateFinder finder =
-      CandidateFinder(HierarchyCandidates{context.index(), &scene, &context.bvh(), {},
-                                          options.merge_coplanar ? &context.coplanar_partners() : nullptr, panels,
-                                          drop_back_faces});
+      CandidateFinder(HierarchyCandidates{context.index(), &scene, &context.bvh(), {}, panels,
+                                          options.merge_panels, drop_back_faces});
   const Box3 approx = approximate_box(cell);
   std::vector<TriangleAnswer> answers(n);
   std::atomic<std::int64_t> decided{0};
@@ -235,8 +233,7 @@ CellPvs exact_cell_pvs(const PvsContext& context, const RationalBox3& cell, cons
                                         const int pos = bvh.position[t];
                                         return pos >= node.begin && pos < node.end;
                                       },
-                                      options.merge_coplanar ? &context.coplanar_partners() : nullptr, panels,
-                                      drop_back_faces};
+                                      panels, options.merge_panels, drop_back_faces};
     VisibilityStats stats;
     VisibilityOptions box_options = options.query;
     box_options.split_budget = static_cast<std::int64_t>(std::max(0, options.box_splits_per_triangle)) *
