@@ -1,7 +1,5 @@
 #include "region/cell_pvs.hpp"
 
-#include "region/coplanar_partners.hpp"
-
 #include <cmath>
 #include <stdexcept>
 
@@ -23,11 +21,6 @@ const ExtrudedScene& PvsContext::extruded() const {
 const std::vector<ConvexSolid>& PvsContext::solids() const {
   std::call_once(lazy_->solids_once, [&] { lazy_->solids = convex_solids(scene_); });
   return lazy_->solids;
-}
-
-const std::vector<std::int64_t>& PvsContext::coplanar_partners() const {
-  std::call_once(lazy_->partners_once, [&] { lazy_->partners = region::coplanar_partners(scene_); });
-  return lazy_->partners;
 }
 
 const CoplanarPanels& PvsContext::coplanar_panels() const {

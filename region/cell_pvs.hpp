@@ -43,9 +43,7 @@ class PvsContext {
   const ExtrudedScene& extruded() const;
   // The scene's closed convex solids (region/convex_occluder.hpp), computed on first use like extruded().
   const std::vector<ConvexSolid>& solids() const;
-  // The scene's coplanar partner triangles (region/coplanar_partners.hpp), computed on first use like solids().
-  const std::vector<std::int64_t>& coplanar_partners() const;
-  // The scene's coplanar convex panels (region/coplanar_panels.hpp), computed on first use like solids().
+  // The scene's coplanar convex panels and pairs (region/coplanar_panels.hpp), computed on first use like solids().
   const CoplanarPanels& coplanar_panels() const;
 
  private:
@@ -55,10 +53,9 @@ class PvsContext {
   TriangleBvh bvh_;
   double diagonal_ = 0;
   struct Lazy {
-    std::once_flag once, solids_once, partners_once, panels_once;
+    std::once_flag once, solids_once, panels_once;
     ExtrudedScene extruded;
     std::vector<ConvexSolid> solids;
-    std::vector<std::int64_t> partners;
     CoplanarPanels panels;
   };
   std::unique_ptr<Lazy> lazy_ = std::make_unique<Lazy>();
@@ -76,16 +73,22 @@ struct PvsOptions {
                             // one hitting nothing before the face skips the node's hidden-box test (sound:
                             // descending is; docs/theory.md §5.8)
   int min_cull = 16;        // hidden-box tests only for nodes of at least this many triangles
-  bool merge_coplanar = true;  // hidden-box tests and triangle queries subtract coplanar partner triangles as
-                               // one quadrilateral occluder (region/coplanar_partners.hpp; the same line sets,
-                               // §5.8; witnesses found by the CSG may differ from those without)
-  bool merge_panels = true;  // with merge_coplanar: also whole coplanar convex panels (region/coplanar_panels.hpp;
-                             // a wall strip, a roof fan) as one convex occluder, before the pairs (§5.8)
+  bool merge_coplanar = true;  // hidden-box tests and triangle queries subtract coplanar pairs (two triangles
+                               // with a convex union, region/coplanar_panels.hpp) as one convex occluder (the same
+                               // line sets, §5.8; witnesses found by the CSG may differ from those without)
+  bool merge_panels = true;  // with merge_coplanar: whole coplanar convex panels first (a wall strip, a roof fan)
+                             // as one convex occluder, the pairs then for the triangles left (§5.8)
   int box_splits_per_triangle = 0;   // > 0: a node's hidden-box test gives up after this many CSG splits per
                                       // triangle of the node, and the node is descended (sound, docs/theory.md
                                       // §5.8); 0: no limit
   bool occluder_proofs = true;  // method `exact`: try the single wall / convex solid proofs of method
                                 // `conservative` (region/single_occluder_culling.hpp) before the line-space tests
+  bool back_faces = true;       // method `exact`: a triangle of a closed convex solid apart from the cell whose
+                                // plane has the whole cell on the solid's side is hidden by that solid
+                                // (region/back_face_culling.hpp, docs/theory.md §5.8), before its rays and query
+  bool back_face_occluders = true;  // method `exact`: such back faces are also dropped from the occluders of the
+                                    // triangle queries and box tests (the solid's other triangles block the same
+                                    // lines up to a null set; same answers, other CSG pieces and witnesses)
   int virtual_occluders = 32;   // method `exact` with the hierarchy: at most this many boxes proved hidden are
                                 // kept as virtual occluders for what lies behind (region/virtual_occluders.hpp);
                                 // 0: none (each node decided on its own, as before)
@@ -112,6 +115,7 @@ struct CellPvsStats {
   std::int64_t boxes_tested = 0;       // exact hidden-box tests run
   std::int64_t boxes_culled = 0;       // boxes proved hidden
   std::int64_t boxes_given_up = 0;     // box tests that spent their split budget (descended; not in JSON files)
+  std::int64_t culled_by_back_faces = 0;  // of culled_by_occluders, back faces of their own solid (not in JSON)
   std::int64_t culled_by_virtual = 0;  // triangles culled by a virtual occluder (a box proved hidden before;
                                        // not in JSON files)
   std::int64_t virtual_occluders = 0;  // boxes registered as virtual occluders (before the cap; not in JSON)

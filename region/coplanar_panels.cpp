@@ -181,6 +181,29 @@ CoplanarPanels coplanar_panels(const Scene& scene, int max_greedy) {
       if (members.size() >= 2) add_panel(std::move(members), std::move(loop));
     }
   }
+  // Pairs, greedy in index order along t's edges.
+  out.pair_of.assign(n, -1);
+  for (std::size_t t = 0; t < n; ++t) {
+    if (!usable[t] || adjacent[t].empty() || out.pair_of[t] >= 0) continue;
+    const SceneTriangle& st = scene.triangles[t];
+    for (int k = 0; k < 3 && out.pair_of[t] < 0; ++k) {
+      Key u = key(scene.corner(st, k)), v = key(scene.corner(st, (k + 1) % 3));
+      if (v < u) std::swap(u, v);
+      for (const std::int64_t o : edges[{u, v}]) {
+        if (o == static_cast<std::int64_t>(t) || out.pair_of[static_cast<std::size_t>(o)] >= 0) continue;
+        const auto& adj = adjacent[t];
+        if (std::find(adj.begin(), adj.end(), o) == adj.end()) continue;  // not coplanar
+        std::vector<std::int64_t> two{std::min<std::int64_t>(static_cast<std::int64_t>(t), o),
+                                      std::max<std::int64_t>(static_cast<std::int64_t>(t), o)};
+        std::vector<Point3> loop = convex_union_loop(scene, two);
+        if (loop.empty()) continue;
+        const auto p = static_cast<std::int32_t>(out.pairs.size());
+        out.pair_of[t] = out.pair_of[static_cast<std::size_t>(o)] = p;
+        out.pairs.push_back({std::move(two), std::move(loop)});
+        break;
+      }
+    }
+  }
   return out;
 }
 

@@ -26,6 +26,12 @@ struct CoplanarPanel {
 struct CoplanarPanels {
   std::vector<CoplanarPanel> panels;
   std::vector<std::int32_t> panel_of;  // per scene triangle: index into panels, or -1
+  // The fallback level: pairs, panels of exactly two triangles (coplanar, sharing an edge, convex union by the
+  // same certificate), matched greedily in index order, at most one per triangle, inside one panel or across
+  // two. A query uses a triangle's pair when its panel is absent or unusable there (the panel's loop crosses a
+  // polygon plane of the stabbing pair, or the panel holds the target).
+  std::vector<CoplanarPanel> pairs;
+  std::vector<std::int32_t> pair_of;   // per scene triangle: index into pairs, or -1
 };
 
 // Input: the triangles (indices into scene.triangles, coplanar or not, any order). Output: the union's loop as
@@ -35,8 +41,11 @@ std::vector<Point3> convex_union_loop(const Scene& scene, const std::vector<std:
 // Input: a scene; max_greedy bounds the size of a panel grown greedily. Output: disjoint panels. Each
 // connected set of coplanar edge-sharing triangles is one panel when its union is convex (any size); else
 // panels are grown greedily from its lowest unassigned triangle, adding the lowest edge-adjacent triangle
-// that keeps the union convex, up to max_greedy triangles. Triangles of no panel have panel_of -1. Exact;
-// cost O(n log n) plus the greedy growth (O(max_greedy^2 log) per panel).
+// that keeps the union convex, up to max_greedy triangles. Triangles of no panel have panel_of -1. And the
+// disjoint pairs: for each triangle t in increasing order without a pair, the first coplanar triangle o
+// without a pair that shares t's edge 0, 1 or 2 (in that order; triangles on one edge in increasing order)
+// such that t ∪ o passes the certificate. Exact; cost O(n log n) plus the greedy growth (O(max_greedy^2 log)
+// per panel).
 CoplanarPanels coplanar_panels(const Scene& scene, int max_greedy = 64);
 
 }  // namespace exactvis::region

@@ -1,5 +1,6 @@
 #include "region/exact_pvs.hpp"
 
+#include "region/back_face_culling.hpp"
 #include "region/box_visibility.hpp"
 #include "region/cell_visibility.hpp"
 #include "region/from_region_visibility.hpp"
@@ -30,7 +31,8 @@ namespace {
 struct TriangleAnswer {
   bool visible = false;
   bool by_rays = false;
-  bool by_occluder = false;  // proved hidden by one wall or one convex solid
+  bool by_occluder = false;  // proved hidden by one wall or one convex solid (or its own solid: by_back_face)
+  bool by_back_face = false;  // a back face of a closed convex solid apart from the cell
   bool by_neighbour = false;  // accepted through the previous cell's witness (counted in by_rays too)
   std::optional<Witness> witness;
   VisibilityStats stats;
@@ -90,14 +92,20 @@ CellPvs exact_cell_pvs(const PvsContext& context, const RationalBox3& cell, cons
   const Scene& scene = context.scene();
   const std::size_t n = scene.triangles.size();
   // Shaft occluders are gathered through the hierarchy (region/hierarchy_candidates.hpp): same answers.
-  // With merge_coplanar, coplanar partner triangles are one quadrilateral occluder in the queries too.
-  // With merge_panels, whole coplanar convex panels too (before the pairs).
-  const CoplanarPanels* panels =
-      options.merge_coplanar && options.merge_panels ? &context.coplanar_panels() : nullptr;
+  // With merge_coplanar, coplanar pairs (2-triangle panels) are one convex occluder in the queries too;
+  // with merge_panels, whole coplanar convex panels first (region/coplanar_panels.hpp).
+  const CoplanarPanels* panels = options.merge_coplanar ? &context.coplanar_panels() : nullptr;
+  // Back faces of closed convex solids (region/back_face_culling.hpp): an exact proof from 8 orientations,
+  // before everything else a triangle costs; with back_face_occluders also dropped from the queries' occluder
+  // lists (the solids' other triangles block the same lines). Both only ever hide (docs/theory.md §5.8).
+  std::optional<BackFaceCulling> back_faces;
+  if (options.back_faces || options.back_face_occluders) back_faces.emplace(context, cell);
+  const bool use_back_faces = options.back_faces && back_faces->any();
+  const BackFaceCulling* drop_back_faces =
+      options.back_face_occluders && back_faces && back_faces->any() ? &*back_faces : nullptr;
   const CandidateFinder finder =
-      options.merge_coplanar ? CandidateFinder(HierarchyCandidates{context.index(), &scene, &context.bvh(), {},
-                                                                   &context.coplanar_partners(), panels})
-                             : hierarchy_candidates(context.index(), scene, context.bvh());
+      CandidateFinder(HierarchyCandidates{context.index(), &scene, &context.bvh(), {}, panels,
+                                          options.merge_panels, drop_back_faces});
   const Box3 approx = approximate_box(cell);
   std::vector<TriangleAnswer> answers(n);
   std::atomic<std::int64_t> decided{0};
@@ -117,6 +125,12 @@ CellPvs exact_cell_pvs(const PvsContext& context, const RationalBox3& cell, cons
   auto decide = [&](std::size_t i, std::ptrdiff_t* hint) {
     const auto t = static_cast<std::int64_t>(i);
     TriangleAnswer& a = answers[i];
+    if (use_back_faces && back_faces->hides_triangle(t)) {
+      a.by_occluder = a.by_back_face = true;
+      const std::int64_t d = decided.fetch_add(1) + 1;
+      if (options.on_progress) options.on_progress(d);
+      return;
+    }
     std::mt19937_64 rng(mix_seed(options.query.seed, i));
     if (!neighbour.empty() && neighbour[i])
       for (Witness& w : neighbour_proposals(*neighbour[i], cell, approx, previous->cell))
@@ -219,7 +233,7 @@ CellPvs exact_cell_pvs(const PvsContext& context, const RationalBox3& cell, cons
                                         const int pos = bvh.position[t];
                                         return pos >= node.begin && pos < node.end;
                                       },
-                                      options.merge_coplanar ? &context.coplanar_partners() : nullptr, panels};
+                                      panels, options.merge_panels, drop_back_faces};
     VisibilityStats stats;
     VisibilityOptions box_options = options.query;
     box_options.split_budget = static_cast<std::int64_t>(std::max(0, options.box_splits_per_triangle)) *
@@ -263,6 +277,13 @@ CellPvs exact_cell_pvs(const PvsContext& context, const RationalBox3& cell, cons
     if (use_proofs && node.end - node.begin > 1 && proofs->hides_node(node, hint)) {
       dark.add(node.box);
       return cull(node, 2);
+    }
+    // Every triangle a back face of its solid (early exit at the first that is not): culled without a box
+    // test; the box is not dark (it may hold free points in front of the faces), so it is not registered.
+    if (use_back_faces && node.end - node.begin > 1) {
+      bool all = true;
+      for (int i = node.begin; i < node.end && all; ++i) all = back_faces->hides_triangle(bvh.order[i]);
+      if (all) return cull(node, 4);
     }
     if (box_hidden(index)) {
       dark.add(node.box);
@@ -315,8 +336,9 @@ CellPvs exact_cell_pvs(const PvsContext& context, const RationalBox3& cell, cons
   for (std::size_t i = 0; i < n; ++i) {
     const TriangleAnswer& a = answers[i];
     if (culled[i] || a.by_occluder) ++out.stats.culled;
-    if (culled[i] == 2 || a.by_occluder) ++out.stats.culled_by_occluders;
+    if (culled[i] == 2 || culled[i] == 4 || a.by_occluder) ++out.stats.culled_by_occluders;
     if (culled[i] == 3) ++out.stats.culled_by_virtual;
+    if (culled[i] == 4 || a.by_back_face) ++out.stats.culled_by_back_faces;
     if (culled[i] || a.by_occluder) continue;
     if (a.by_neighbour) ++out.stats.neighbour_hits;
     if (a.by_rays) ++out.stats.accepted_by_rays;

@@ -19,6 +19,8 @@
 
 namespace exactvis::region {
 
+class BackFaceCulling;  // region/back_face_culling.hpp
+
 // A test on closed boxes of doubles: true only when the caller has proved that no triangle inside the box is
 // of use to it (it may answer false whenever unsure). Called on the querying thread only.
 using BoxPrune = std::function<bool(const Box3& box)>;
@@ -28,13 +30,16 @@ struct HierarchyCandidates {
   const Scene* scene = nullptr;     // the scene `bvh` was built on; must outlive this
   const TriangleBvh* bvh = nullptr;  // must outlive this
   std::function<bool(std::int64_t)> excluded;  // may be empty; triangles it holds for are never returned
-  // May be null. Else the scene's coplanar partners (region/coplanar_partners.hpp): the stabbing-pair queries
-  // through this finder subtract each pair of whole partner occluders as one quadrilateral (the same line set).
-  const std::vector<std::int64_t>* partners = nullptr;
-  // May be null. Else the scene's coplanar convex panels (region/coplanar_panels.hpp): the stabbing-pair queries
-  // through this finder subtract each usable panel as one convex occluder (the same line set up to a null set),
-  // before the partner pairs.
+  // May be null. Else the scene's coplanar convex panels and pairs (region/coplanar_panels.hpp): the
+  // stabbing-pair queries through this finder subtract each usable panel as one convex occluder (the same line
+  // set up to a null set), then each usable pair of the triangles left; only the pairs when whole_panels is false.
   const CoplanarPanels* panels = nullptr;
+  bool whole_panels = true;
+  // May be null. Else the back faces of closed convex solids from the cell every query's source lies in
+  // (region/back_face_culling.hpp): the stabbing-pair queries through this finder drop the occluders that are
+  // back faces of a solid none of whose triangles is excluded (the solid's other triangles block the same
+  // lines up to a null set), before the panels.
+  const BackFaceCulling* back_faces = nullptr;
 
   // index.candidates_in_box(box) without the excluded triangles, in increasing order.
   std::vector<std::int64_t> operator()(const Box3& box) const;

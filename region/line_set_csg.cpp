@@ -1,6 +1,7 @@
 #include "region/line_set_csg.hpp"
 
 #include "kernel/segment_triangle_intersection.hpp"
+#include "region/back_face_culling.hpp"
 #include "region/occluder_shaft.hpp"
 #include "region/polyhedral_cone6.hpp"
 #include "region/real_line_test.hpp"
@@ -145,8 +146,7 @@ class PairQuery {
     return std::nullopt;
   }
 
-  // Does the open segment (p, q) meet the occluder (its triangle, the pair's quadrilateral, or its panel as a
-  // fan of triangles)? Double geometry: it only orders the occluders.
+  // Does the open segment (p, q) meet the occluder (its triangle, or its panel or pair as a fan of triangles)? Double geometry: it only orders the occluders.
   static bool blocks(const ShaftOccluder& occ, const Point3& p, const Point3& q) {
     if (occ.panel_loop) {
       const std::vector<Point3>& l = *occ.panel_loop;
@@ -154,10 +154,7 @@ class PairQuery {
         if (open_segment_meets_closed_triangle(p, q, l[0], l[i], l[i + 1])) return true;
       return false;
     }
-    return open_segment_meets_closed_triangle(p, q, occ.corners_d[0], occ.corners_d[1], occ.corners_d[2]) ||
-           (occ.partner >= 0 && open_segment_meets_closed_triangle(p, q, occ.partner_corners_d[0],
-                                                                   occ.partner_corners_d[1],
-                                                                   occ.partner_corners_d[2]));
+    return open_segment_meets_closed_triangle(p, q, occ.corners_d[0], occ.corners_d[1], occ.corners_d[2]);
   }
 
   // Sample segments are cast with double endpoints (the counts only order the occluders); a sample that
@@ -215,8 +212,8 @@ PairVisibility pair_visibility(const Scene& scene, const HierarchyCandidates& fi
     return segment_is_free(scene, finder, box, p, q, target);
   };
   std::vector<ShaftOccluder> occluders = shaft_occluders(scene, finder, box, target, pair);
-  if (finder.panels) merge_coplanar_panels(occluders, *finder.panels, pair, target, finder.excluded);
-  if (finder.partners) merge_coplanar_pairs(occluders, *finder.partners);
+  if (finder.back_faces) finder.back_faces->drop_back_faces(occluders, finder.excluded);
+  if (finder.panels) merge_coplanar_panels(occluders, *finder.panels, pair, target, finder.excluded, finder.whole_panels);
   PairQuery query(std::move(occluders), is_free, static_cast<std::uint64_t>(target), pair, options, out.stats);
   out.witness = query.run();
   out.gave_up = query.gave_up_;

@@ -343,86 +343,30 @@ std::vector<ShaftOccluder> shaft_occluders(const Scene& scene, const HierarchyCa
   return occluders_among(scene, finder.pruned_with(box, outside), target, planes, pair);
 }
 
-void merge_coplanar_pairs(std::vector<ShaftOccluder>& occluders, const std::vector<std::int64_t>& partner) {
-  if (occluders.size() < 2) return;
-  std::vector<std::pair<std::int64_t, std::size_t>> whole;  // (triangle, position), sorted by triangle
-  for (std::size_t i = 0; i < occluders.size(); ++i)
-    if (occluders[i].whole && occluders[i].partner < 0 && occluders[i].edges.size() == 3)
-      whole.emplace_back(occluders[i].triangle, i);
-  if (whole.size() < 2) return;
-  std::sort(whole.begin(), whole.end());
-  std::vector<char> drop(occluders.size(), 0);
-  for (const auto& [t, i] : whole) {
-    if (drop[i] || occluders[i].partner >= 0 || t < 0 || static_cast<std::size_t>(t) >= partner.size()) continue;
-    const std::int64_t o = partner[static_cast<std::size_t>(t)];
-    if (o < 0) continue;
-    const auto it = std::lower_bound(whole.begin(), whole.end(), std::make_pair(o, std::size_t{0}));
-    if (it == whole.end() || it->first != o) continue;
-    const std::size_t j = it->second;
-    if (drop[j] || occluders[j].partner >= 0) continue;
-    ShaftOccluder& a = occluders[i];
-    ShaftOccluder& b = occluders[j];
-    const std::size_t first = std::min(i, j), second = std::max(i, j);
-    // The shared edge: a's corners k, k+1 are b's corners m+1, m (one loop orientation) or m, m+1 (opposite).
-    bool merged = false;
-    for (std::size_t k = 0; k < 3 && !merged; ++k)
-      for (std::size_t m = 0; m < 3 && !merged; ++m) {
-        const Point3 &a0 = a.corners_d[k], &a1 = a.corners_d[(k + 1) % 3];
-        const Point3 &b0 = b.corners_d[m], &b1 = b.corners_d[(m + 1) % 3];
-        std::vector<ConeVector6> edges{a.edges[(k + 1) % 3], a.edges[(k + 2) % 3]};
-        if (b0 == a1 && b1 == a0) {
-          edges.push_back(b.edges[(m + 1) % 3]);
-          edges.push_back(b.edges[(m + 2) % 3]);
-        } else if (b0 == a0 && b1 == a1) {  // b runs the other way round: its loop reversed
-          edges.push_back(b.edges[(m + 2) % 3].negated());
-          edges.push_back(b.edges[(m + 1) % 3].negated());
-        } else {
-          continue;
-        }
-        ShaftOccluder q;
-        q.triangle = a.triangle;
-        q.corners_d = a.corners_d;
-        q.whole = false;
-        q.partner = b.triangle;
-        q.partner_corners_d = b.corners_d;
-        q.edges = std::move(edges);
-        occluders[first] = std::move(q);
-        drop[second] = 1;
-        merged = true;
-      }
-  }
-  std::size_t w = 0;
-  for (std::size_t i = 0; i < occluders.size(); ++i)
-    if (!drop[i]) {
-      if (w != i) occluders[w] = std::move(occluders[i]);
-      ++w;
-    }
-  occluders.resize(w);
-}
+namespace {
 
-void merge_coplanar_panels(std::vector<ShaftOccluder>& occluders, const CoplanarPanels& panels,
-                           const StabbingPair& pair, std::int64_t target,
-                           const std::function<bool(std::int64_t)>& excluded) {
-  if (occluders.empty()) return;
-  const std::size_t n = panels.panel_of.size();
-  auto panel_of = [&](const ShaftOccluder& o) -> std::int32_t {
-    if (o.triangle < 0 || static_cast<std::size_t>(o.triangle) >= n || o.panel_loop || o.partner >= 0) return -1;
-    return panels.panel_of[static_cast<std::size_t>(o.triangle)];
+// One level of merge_coplanar_panels: `groups` with `group_of` per scene triangle (the panels, or the pairs).
+void merge_level(std::vector<ShaftOccluder>& occluders, const std::vector<CoplanarPanel>& groups,
+                 const std::vector<std::int32_t>& group_of, const std::array<ShaftPlane, 2>& wedge,
+                 std::int64_t target, const std::function<bool(std::int64_t)>& excluded) {
+  const std::size_t n = group_of.size();
+  auto group = [&](const ShaftOccluder& o) -> std::int32_t {
+    if (o.triangle < 0 || static_cast<std::size_t>(o.triangle) >= n || o.panel_loop) return -1;
+    return group_of[static_cast<std::size_t>(o.triangle)];
   };
-  // The panels present, in order of first occurrence, and whether each is usable (decided once).
-  std::vector<std::pair<std::int32_t, std::size_t>> first;  // (panel, position of its first occluder)
-  for (std::size_t i = 0; i < occluders.size(); ++i) {
-    const std::int32_t p = panel_of(occluders[i]);
-    if (p < 0) continue;
-    bool known = false;
-    for (const auto& f : first) known |= f.first == p;
-    if (!known) first.emplace_back(p, i);
-  }
+  // The groups present with the position of their first occluder: sorted by (group, position), the first of
+  // each group kept, then back in the order of first occurrence.
+  std::vector<std::pair<std::int32_t, std::size_t>> first;
+  for (std::size_t i = 0; i < occluders.size(); ++i)
+    if (const std::int32_t g = group(occluders[i]); g >= 0) first.emplace_back(g, i);
   if (first.empty()) return;
-  const std::array<ShaftPlane, 2> wedge{ShaftPlane(pair.source_plane), ShaftPlane(pair.target_plane)};
-  std::vector<std::int32_t> used;  // usable panels, sorted
-  for (const auto& [p, at] : first) {
-    const CoplanarPanel& panel = panels.panels[static_cast<std::size_t>(p)];
+  std::sort(first.begin(), first.end());
+  first.erase(std::unique(first.begin(), first.end(), [](const auto& x, const auto& y) { return x.first == y.first; }),
+              first.end());
+  std::vector<char> merged(occluders.size(), 0);  // positions that now hold a merged group
+  std::vector<std::int32_t> used;                 // usable groups, sorted (`first` is sorted by group)
+  for (const auto& [g, at] : first) {
+    const CoplanarPanel& panel = groups[static_cast<std::size_t>(g)];
     bool ok = true;
     for (const Point3& c : panel.loop)
       for (const ShaftPlane& pl : wedge) ok = ok && pl.side(c) == Sign::Positive;
@@ -441,18 +385,35 @@ void merge_coplanar_panels(std::vector<ShaftOccluder>& occluders, const Coplanar
       q.edges.push_back(std::move(e));
     }
     occluders[at] = std::move(q);
-    used.push_back(p);
+    merged[at] = 1;
+    used.push_back(g);
   }
   if (used.empty()) return;
-  std::sort(used.begin(), used.end());
   std::size_t w = 0;
   for (std::size_t i = 0; i < occluders.size(); ++i) {
-    const std::int32_t p = panel_of(occluders[i]);
-    if (p >= 0 && std::binary_search(used.begin(), used.end(), p)) continue;  // merged into its panel
+    const std::int32_t g = merged[i] ? -1 : group(occluders[i]);
+    if (g >= 0 && std::binary_search(used.begin(), used.end(), g)) continue;  // merged into its group
     if (w != i) occluders[w] = std::move(occluders[i]);
     ++w;
   }
   occluders.resize(w);
+}
+
+}  // namespace
+
+void merge_coplanar_panels(std::vector<ShaftOccluder>& occluders, const CoplanarPanels& panels,
+                           const StabbingPair& pair, std::int64_t target,
+                           const std::function<bool(std::int64_t)>& excluded, bool whole_panels) {
+  // Nothing to merge (the common case on scenes without coplanar neighbours): not even the wedge's planes.
+  auto in_some = [&](const ShaftOccluder& o) {
+    if (o.triangle < 0 || static_cast<std::size_t>(o.triangle) >= panels.pair_of.size()) return false;
+    const auto t = static_cast<std::size_t>(o.triangle);
+    return (whole_panels && panels.panel_of[t] >= 0) || panels.pair_of[t] >= 0;
+  };
+  if (std::none_of(occluders.begin(), occluders.end(), in_some)) return;
+  const std::array<ShaftPlane, 2> wedge{ShaftPlane(pair.source_plane), ShaftPlane(pair.target_plane)};
+  if (whole_panels) merge_level(occluders, panels.panels, panels.panel_of, wedge, target, excluded);
+  merge_level(occluders, panels.pairs, panels.pair_of, wedge, target, excluded);
 }
 
 std::vector<ShaftOccluder> shaft_occluders(const std::vector<std::array<RationalPoint3, 3>>& triangles,

@@ -21,33 +21,23 @@ struct ShaftOccluder {
   int blocked_samples = 0;     // sample segments it blocked (orders the CSG; set by the caller)
   bool whole = false;          // the whole triangle, unclipped (the clipping shortcut): edges[i] is the line from
                                // corners_d[i] to corners_d[i + 1]
-  std::int64_t partner = -1;   // merged with this coplanar triangle into one convex quadrilateral
-                               // (merge_coplanar_pairs): edges are then the quadrilateral's four
-  std::array<Point3, 3> partner_corners_d{};  // the partner's corners (for sampling)
-  const std::vector<Point3>* panel_loop = nullptr;  // merged into this coplanar convex panel
+  const std::vector<Point3>* panel_loop = nullptr;  // merged into this coplanar convex panel or pair
                                                     // (merge_coplanar_panels): edges are the loop's; the
                                                     // loop's corners (for sampling; owned by the panels)
 };
 
-// Merges each pair of whole occluders that are coplanar partners (partner[a] == b, region/coplanar_partners.hpp)
-// into one occluder, the convex quadrilateral a ∪ b, at the position of the first of them (the order of the
-// others kept): its four edges are the two triangles' edges other than the shared one, oriented along one loop.
-// The lines meeting the closed quadrilateral are those meeting one of the two closed triangles, so the CSG
-// subtracts the same line set (docs/theory.md §5.8). Exact (functionals are primitive integer vectors: the
-// shared edge's are equal or opposite).
-void merge_coplanar_pairs(std::vector<ShaftOccluder>& occluders, const std::vector<std::int64_t>& partner);
-
 // Replaces the occluders that are triangles of one usable panel (region/coplanar_panels.hpp) by that panel, one
 // convex occluder at the position of the first of them (the order of the others kept), its edges the lines of
-// the loop's sides in loop order. A panel is usable when none of its triangles is `target` or `excluded` (may
-// be empty) and every loop corner lies strictly inside both polygon planes of the pair (so the whole panel
-// does: its triangles that are not in the list lie outside the shaft, and the lines meeting them there are a
-// null set). The lines meeting the panel inside the wedge are blocked by its closed triangles, and include
-// those meeting the listed triangles, so the CSG's free set changes by a null set only (docs/theory.md §5.8).
-// Exact (filtered side tests on the loop's double corners).
+// the loop's sides in loop order; then does the same with the pairs (2-triangle panels) for the occluders left
+// as triangles. With whole_panels false only the pairs are merged. A panel or pair is usable when none of its
+// triangles is `target` or `excluded` (may be empty) and every loop corner lies strictly inside both polygon
+// planes of the pair (so the whole panel does). The lines meeting it inside the wedge are blocked by its closed
+// triangles (real occluders of the query), and include those meeting the listed triangles it replaces, so the
+// CSG's free set changes by a null set only (docs/theory.md §5.8). Exact (filtered side tests on the loop's
+// double corners). Cost: O(m log m) for m occluders, plus the loop corners' side tests of each panel met.
 void merge_coplanar_panels(std::vector<ShaftOccluder>& occluders, const CoplanarPanels& panels,
                            const StabbingPair& pair, std::int64_t target,
-                           const std::function<bool(std::int64_t)>& excluded);
+                           const std::function<bool(std::int64_t)>& excluded, bool whole_panels = true);
 
 // Planes through an edge of one polygon and a vertex of the other that support conv(S' u T'), plus the two
 // polygon planes; each oriented so the hull is on the side value >= 0. Exact.

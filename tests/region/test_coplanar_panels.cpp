@@ -26,6 +26,14 @@ mpq_class twice_area_squared(const std::vector<QVec>& poly) {
   return oracle::dot(s, s);
 }
 
+// Do the triangles share an edge (two corners with equal coordinates)?
+bool shares_edge(const Scene& s, std::size_t a, std::size_t b) {
+  int shared = 0;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) shared += s.corner(s.triangles[a], i) == s.corner(s.triangles[b], j) ? 1 : 0;
+  return shared >= 2;
+}
+
 // Oracle check of one panel; returns a failure description or "".
 std::string check_panel(const Scene& scene, const CoplanarPanel& panel, std::mt19937_64& rng) {
   if (panel.triangles.size() < 2) return "panel of fewer than two triangles";
@@ -142,7 +150,7 @@ TEST(CoplanarPanels, HandMadeUnions) {
 }
 
 TEST(CoplanarPanels, RandomGridsWithHolesAgreeWithTheOracle) {
-  std::int64_t panels_seen = 0, multi = 0, covered = 0, triangles = 0;
+  std::int64_t panels_seen = 0, multi = 0, covered = 0, triangles = 0, pairs_seen = 0;
   for (unsigned seed = 1; seed <= 40; ++seed) {
     std::mt19937_64 rng(seed);
     region_test::SceneBuilder b;
@@ -189,8 +197,36 @@ TEST(CoplanarPanels, RandomGridsWithHolesAgreeWithTheOracle) {
         EXPECT_EQ(panels.panel_of[t], -1);
       }
     }
+    // The pairs: 2-triangle panels by the same oracle check, disjoint, and maximal (no two unpaired triangles
+    // sharing an edge would pass the certificate: the greedy matching leaves none).
+    std::vector<int> paired(s.triangles.size(), 0);
+    ASSERT_EQ(panels.pair_of.size(), s.triangles.size());
+    for (std::size_t p = 0; p < panels.pairs.size(); ++p) {
+      const CoplanarPanel& pr = panels.pairs[p];
+      ASSERT_EQ(pr.triangles.size(), 2u);
+      EXPECT_EQ(check_panel(s, pr, rng), "") << "seed " << seed << " pair " << p;
+      for (const std::int64_t t : pr.triangles) {
+        ++paired[static_cast<std::size_t>(t)];
+        EXPECT_EQ(panels.pair_of[static_cast<std::size_t>(t)], static_cast<std::int32_t>(p));
+      }
+      ++pairs_seen;
+    }
+    for (std::size_t t = 0; t < s.triangles.size(); ++t) {
+      EXPECT_LE(paired[t], 1);
+      if (!paired[t]) {
+        EXPECT_EQ(panels.pair_of[t], -1);
+      }
+    }
+    for (std::size_t t = 0; t < s.triangles.size(); ++t)
+      for (std::size_t o = t + 1; o < s.triangles.size() && !paired[t]; ++o)
+        if (!paired[o]) {
+          EXPECT_TRUE(convex_union_loop(s, {static_cast<std::int64_t>(t), static_cast<std::int64_t>(o)}).empty() ||
+                      !shares_edge(s, t, o))
+              << "seed " << seed << ": unpaired triangles " << t << ", " << o << " would make a pair";
+        }
   }
   EXPECT_GT(multi, 20);  // panels of more than a pair are found
+  EXPECT_GT(pairs_seen, 40);
   EXPECT_GT(covered, triangles / 2);
   EXPECT_GT(panels_seen, 40);
 }
