@@ -44,19 +44,38 @@ IntervalLines interval_lines(const EeeLinePolynomials& l) {
   return r;
 }
 
+// The same coefficients and parameter ranges for may_vanish's unprotected interval arithmetic.
+using IU = CGAL::Interval_nt<false>;  // needs the rounding mode set upward (CGAL::Protect_FPU_rounding)
+struct VanishFilter {
+  std::array<std::array<IU, 3>, 3> d, m;  // [coordinate][power]
+  std::vector<IU> ranges;
+};
+VanishFilter vanish_filter(const IntervalLines& l, const std::vector<I>& ranges) {
+  VanishFilter f;
+  for (int k = 0; k < 3; ++k)
+    for (int j = 0; j < 3; ++j) {
+      f.d[k][j] = IU(l.d[k][j].inf(), l.d[k][j].sup());
+      f.m[k][j] = IU(l.m[k][j].inf(), l.m[k][j].sup());
+    }
+  for (const I& t : ranges) f.ranges.push_back(IU(t.inf(), t.sup()));
+  return f;
+}
+
 // Can side(L(t), line(a, b)) vanish for some t in one of the ranges? Interval arithmetic only: `false` is a
-// proof (the enclosure of the polynomial's values over each range excludes 0).
-bool may_vanish(const IntervalLines& l, const Point3& a, const Point3& b, const std::vector<I>& ranges) {
-  const std::array<I, 3> A{I(a.x), I(a.y), I(a.z)}, B{I(b.x), I(b.y), I(b.z)};
-  const std::array<I, 3> de{B[0] - A[0], B[1] - A[1], B[2] - A[2]};
-  const std::array<I, 3> me{A[1] * B[2] - A[2] * B[1], A[2] * B[0] - A[0] * B[2], A[0] * B[1] - A[1] * B[0]};
-  std::array<I, 3> c;
+// proof (the enclosure of the polynomial's values over each range excludes 0). One rounding-mode switch per
+// call (the protected Interval_nt switched at every operation; the same intervals).
+bool may_vanish(const VanishFilter& l, const Point3& a, const Point3& b) {
+  CGAL::Protect_FPU_rounding<true> upward;
+  const std::array<IU, 3> A{IU(a.x), IU(a.y), IU(a.z)}, B{IU(b.x), IU(b.y), IU(b.z)};
+  const std::array<IU, 3> de{B[0] - A[0], B[1] - A[1], B[2] - A[2]};
+  const std::array<IU, 3> me{A[1] * B[2] - A[2] * B[1], A[2] * B[0] - A[0] * B[2], A[0] * B[1] - A[1] * B[0]};
+  std::array<IU, 3> c;
   for (int j = 0; j < 3; ++j) {
-    c[j] = I(0);
+    c[j] = IU(0);
     for (int k = 0; k < 3; ++k) c[j] += l.d[k][j] * me[k] + de[k] * l.m[k][j];
   }
-  for (const I& t : ranges) {
-    const I v = c[0] + t * (c[1] + t * c[2]);
+  for (const IU& t : l.ranges) {
+    const IU v = c[0] + t * (c[1] + t * c[2]);
     if (v.inf() <= 0 && v.sup() >= 0) return true;
   }
   return false;
@@ -155,16 +174,21 @@ std::vector<EeeEndPiece> split_eee_interval(const Scene& scene, const TriangleIn
     for (const RealRoot& r : real_roots(p))
       if (r.t > lo && r.t < hi) out.push_back(r.t);
   };
-  std::set<std::array<int, 2>> done;
+  std::vector<std::array<int, 2>> edges;  // the candidates' edges, each once
+  edges.reserve(3 * cand.size());
   for (std::int64_t ti : cand) {
     const auto& t = scene.triangles[ti];
     for (int k = 0; k < 3; ++k) {
       const int a = t.v[k], b = t.v[(k + 1) % 3];
-      if (!done.insert({std::min(a, b), std::max(a, b)}).second) continue;
-      if (!may_vanish(il, scene.vertices[a], scene.vertices[b], ranges)) continue;
-      add_roots(eee_side_polynomial(lines, to_rational(scene.vertices[a]), to_rational(scene.vertices[b])), T0, T1,
-                bps);
+      edges.push_back({std::min(a, b), std::max(a, b)});
     }
+  }
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  const VanishFilter vf = vanish_filter(il, ranges);
+  for (const auto& [a, b] : edges) {
+    if (!may_vanish(vf, scene.vertices[a], scene.vertices[b])) continue;
+    add_roots(eee_side_polynomial(lines, to_rational(scene.vertices[a]), to_rational(scene.vertices[b])), T0, T1, bps);
   }
   std::sort(bps.begin(), bps.end());
   bps.erase(std::unique(bps.begin(), bps.end()), bps.end());
