@@ -281,10 +281,10 @@ EeeArcInsertion insert_eee_arcs(const Scene& scene, const DirectionEventArcs& ev
     }
   }
   if (!out.ok) return out;
-  // No two EEE arcs meet, except at common rational cut points on the circles: cut points of different arcs
-  // are distinct unless both are rational (then they are one vertex of the partition); ends inside faces are
-  // distinct; within a face the sub-arcs are pairwise disjoint but for common ends (exact boxes in the face's
-  // chart, refined by bisection; near a common end, the two wedges of directions from it).
+  // Cut points of different arcs are distinct unless both are rational (then they are one vertex of the
+  // partition); ends inside faces are distinct; within a face the sub-arcs of one arc are pairwise disjoint but
+  // for common ends (exact boxes in the face's chart, refined by bisection; near a common end, the two wedges
+  // of directions from it); sub-arcs of different arcs meet at crossings (aspect/eee_crossings).
   std::vector<int> same_as(out.points.size(), -1);
   for (std::size_t i = 0; i < out.points.size(); ++i)
     for (std::size_t j = i + 1; j < out.points.size(); ++j) {
@@ -314,6 +314,17 @@ EeeArcInsertion insert_eee_arcs(const Scene& scene, const DirectionEventArcs& ev
     for (std::size_t i = 0; i < subs.size(); ++i)
       for (std::size_t j = i + 1; j < subs.size(); ++j) {
         const EeeSubArc &u = out.subarcs[subs[i]], &w = out.subarcs[subs[j]];
+        // Sub-arcs of two different arcs meet exactly where aspect/eee_crossings finds them (the roots of one
+        // arc's quartic on the other's cone); only pieces of one arc are certified apart here.
+        // (Two arcs on one cone, e.g. one family's two orientations, are certified apart here too.)
+        if (u.arc != w.arc) {
+          bool same_cone = true;
+          for (int k = 0; k < 5 && same_cone; ++k) {
+            const V3 d = polys[u.arc].at(Exact(k));
+            same_cone = CGAL::sign(quad_form(out.cone[w.arc], d, d)) == 0;
+          }
+          if (!same_cone) continue;
+        }
         const Exact ua = below(out.points[u.first].t), ub = above(out.points[u.second].t);
         const Exact wa = below(out.points[w.first].t), wb = above(out.points[w.second].t);
         // Common ends: (end of u, end of w) pairs at one point (0 = first, 1 = second).

@@ -7,12 +7,13 @@
 // roots exact in Q(sqrt D)); every open piece between consecutive cuts (a *sub-arc*) lies in one face of the
 // arrangement (found from the sign vector of its rational sample). Every cut is a *point*: a vertex of the
 // arrangement, a point inside one of its arcs (with its position lambda along the arc, exact), or an end of
-// the arc inside a face. Within a face, sub-arcs must be pairwise disjoint (certified by exact rational boxes
-// in the face's central chart, refined by bisection of the parameter), so inside each face they form a
-// non-crossing diagram of simple curves whose faces follow from the cyclic order of their ends on the face's
-// boundary (aspect/general_orthographic_aspect_graph). An arc touching a circle (a double root, rational) is cut
-// there like at a crossing. The subset handled (else `ok` is false with one line in `problem`): arc ends at
-// rational parameters, no EEE arc lying on a circle, no two EEE arcs meeting but at common rational cut points.
+// the arc inside a face. Within a face, sub-arcs of one arc must be pairwise disjoint (certified by exact
+// rational boxes in the face's central chart, refined by bisection of the parameter); sub-arcs of two arcs meet
+// only at common cut points and at crossings inside the face, found exactly by aspect/eee_crossings; the face's
+// components follow from the plane graph they form (aspect/eee_face_split). An arc touching a circle (a double
+// root, rational) is cut there like at a crossing. The subset handled (else `ok` is false with one line in
+// `problem`): arc ends at rational parameters, no EEE arc lying on a circle, two EEE arcs sharing only rational
+// cut points on the circles.
 #include "aspect/direction_event_arcs.hpp"
 #include "aspect/great_circle_arrangement.hpp"
 #include "kernel/number_types.hpp"

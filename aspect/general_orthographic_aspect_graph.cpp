@@ -5,6 +5,8 @@
 #include "aspect/direction_event_arcs.hpp"
 #include "aspect/eee_arc_insertion.hpp"
 #include "aspect/eee_crossing_point.hpp"
+#include "aspect/eee_crossings.hpp"
+#include "aspect/eee_face_split.hpp"
 #include "aspect/great_circle_arrangement.hpp"
 #include "kernel/predicates.hpp"
 #include "kernel/rational_between.hpp"
@@ -67,139 +69,6 @@ struct Cell {
   bool rational = true;      // false: an EEE cut point at an irrational position (no sample)
   std::vector<int> eee;      // the free EEE arcs holding it (indices into DirectionEventArcs::arcs)
 };
-
-// Face f of the arrangement cut by its EEE sub-arcs (docs/theory.md 10.11): the sub-arcs are pairwise
-// disjoint simple curves in the open convex face, each with 0, 1 or 2 ends on its boundary. Walking the
-// boundary (counter-clockwise, the face on the left) the ends on it cut it into gaps; a chord with ends A and
-// B has on one side the gaps just after B and just before A, on the other the gaps just after A and just
-// before B; a curve with one end X on the boundary separates nothing (the gaps on both sides of X are one
-// component). So the components are the classes of gaps under these unions, each with the pieces of its gaps
-// and the sub-arcs along or inside it as facets, and a rational sample: a boundary piece's sample moved inwards
-// off every EEE cone of the face. Appends one face cell per component; returns a problem (one line) when a
-// case is outside the subset (two ends at one boundary point; a curve with no end on the boundary in a face
-// cut into several components).
-std::string split_face(const Scene& scene, const DirectionEventArcs& events, const GreatCircleArrangement& arr,
-                       const EeeArcInsertion& ins, int f,
-                       const std::vector<std::vector<int>>& chain_of_arc, const std::vector<int>& point_cell,
-                       const std::vector<int>& subarc_cell, std::vector<Cell>& cells) {
-  std::vector<int> ring;  // boundary cells in order: vertex, piece, vertex, ...
-  for (int h : arr.faces[f].halfedges) {
-    const auto& ch = chain_of_arc[h / 2];
-    if (h % 2 == 0) ring.insert(ring.end(), ch.begin(), ch.end() - 1);
-    else ring.insert(ring.end(), ch.rbegin(), ch.rend() - 1);
-  }
-  std::map<int, int> position;  // vertex cell -> index in ring
-  for (std::size_t i = 0; i < ring.size(); i += 2) position[ring[i]] = static_cast<int>(i);
-  const auto& subs = ins.subarcs_of_face[f];
-  // Sub-arc ends on the boundary, in ring order; several at one vertex (EEE arcs ending at a common rational
-  // point) by the angle of their tangents in the face's chart, from the boundary before the vertex to the one
-  // after it.
-  struct End {
-    int pos, sub, k;
-  };
-  std::vector<End> list;
-  for (std::size_t i = 0; i < subs.size(); ++i) {
-    const EeeSubArc& s = ins.subarcs[subs[i]];
-    for (int k = 0; k < 2; ++k) {
-      const auto it = position.find(point_cell[k == 0 ? s.first : s.second]);
-      if (it != position.end()) list.push_back({it->second, static_cast<int>(i), k});
-    }
-  }
-  const EeeFaceChart chart = eee_face_chart(arr, f);
-  const int n = static_cast<int>(ring.size());
-  auto tangent = [&](const End& e) {
-    const EeeSubArc& s = ins.subarcs[subs[e.sub]];
-    const EeeArcPoint& p = ins.points[e.k == 0 ? s.first : s.second];
-    Exact t;
-    root_number_rational(p.t, &t);
-    return eee_end_tangent(scene, events.arcs[s.arc], chart, t, e.k);
-  };
-  // Ends at one boundary point x are ordered by the angle of their tangents swept from the boundary before x
-  // (towards the previous ring cell) through the face's interior (the chart's origin, the face's sample) to the
-  // boundary after x: bucket 0 along the boundary before x, 1 strictly inside the sweep, 2 along the boundary
-  // after x when x is no vertex (a straight angle there: an arc touching the circle at x leaves it both ways).
-  bool unordered = false;
-  std::sort(list.begin(), list.end(), [&](const End& a, const End& b) {
-    if (a.pos != b.pos) return a.pos < b.pos;
-    if (a.sub == b.sub && a.k == b.k) return false;
-    const auto x = chart_point(chart, cells[ring[a.pos]].sample);
-    const auto y = chart_point(chart, cells[ring[(a.pos + n - 1) % n]].sample);
-    const std::array<Exact, 2> r0{y[0] - x[0], y[1] - x[1]}, w{-x[0], -x[1]};
-    const int sweep = CGAL::sign(r0[0] * w[1] - r0[1] * w[0]);
-    auto cr = [](const std::array<Exact, 2>& u, const std::array<Exact, 2>& v) { return CGAL::sign(u[0] * v[1] - u[1] * v[0]); };
-    auto bucket = [&](const std::array<Exact, 2>& v) {
-      const int c = cr(r0, v) * sweep;
-      if (c > 0) return 1;
-      if (c < 0) return 3;
-      return CGAL::sign(r0[0] * v[0] + r0[1] * v[1]) > 0 ? 0 : 2;
-    };
-    const auto va = tangent(a), vb = tangent(b);
-    const int ba = bucket(va), bb = bucket(vb);
-    if (ba != bb) return ba < bb;
-    const int o = cr(va, vb) * sweep;
-    if (o == 0 && CGAL::sign(va[0] * vb[0] + va[1] * vb[1]) > 0) unordered = true;
-    return o > 0;
-  });
-  if (unordered) return "two free EEE arcs leave a common point tangentially";
-  const int m = static_cast<int>(list.size());
-  std::vector<int> ends;
-  for (const End& e : list) ends.push_back(e.pos);
-  std::vector<std::array<int, 2>> end_of(subs.size(), {-1, -1});  // index into `list` of each end on the ring
-  for (int j = 0; j < m; ++j) end_of[list[j].sub][list[j].k] = j;
-  const int gaps = std::max(m, 1);
-  auto gap_index = [&](int j) { return j; };
-  std::vector<int> parent(gaps);
-  for (int g = 0; g < gaps; ++g) parent[g] = g;
-  std::function<int(int)> find = [&](int x) { return parent[x] == x ? x : parent[x] = find(parent[x]); };
-  auto unite = [&](int x, int y) { parent[find(x)] = find(y); };
-  for (std::size_t i = 0; i < subs.size(); ++i) {
-    const int a = end_of[i][0], b = end_of[i][1];
-    if (a >= 0 && b >= 0) {
-      const int ia = gap_index(a), ib = gap_index(b);
-      unite(ib, (ia + m - 1) % m);
-      unite(ia, (ib + m - 1) % m);
-    } else if (a >= 0 || b >= 0) {
-      const int ix = gap_index(a >= 0 ? a : b);
-      unite((ix + m - 1) % m, ix);
-    }
-  }
-  // Gap g holds the ring cells strictly after ends[g] up to ends[g + 1] (the whole ring when m == 0).
-  std::map<int, std::vector<int>> pieces_of_class;
-  for (int g = 0; g < gaps; ++g) pieces_of_class[find(g)];
-  for (int g = 0; g < gaps; ++g) {
-    const int start = m == 0 ? 0 : ends[g], stop = m == 0 ? n : (g + 1 < m ? ends[g + 1] : ends[0] + n);
-    for (int i = start; i < stop; ++i)
-      if (cells[ring[i % n]].dimension == 1) pieces_of_class[find(g)].push_back(ring[i % n]);
-  }
-  std::map<int, std::vector<int>> arcs_of_class;
-  for (std::size_t i = 0; i < subs.size(); ++i) {
-    const int a = end_of[i][0], b = end_of[i][1];
-    if (a >= 0 && b >= 0) {
-      arcs_of_class[find(gap_index(a))].push_back(subarc_cell[subs[i]]);
-      arcs_of_class[find(gap_index(b))].push_back(subarc_cell[subs[i]]);
-    } else if (a >= 0 || b >= 0) {
-      arcs_of_class[find(gap_index(a >= 0 ? a : b))].push_back(subarc_cell[subs[i]]);
-    } else {
-      if (pieces_of_class.size() > 1) return "a free EEE arc lies inside a face cut by other EEE arcs, with no end on its boundary";
-      arcs_of_class[pieces_of_class.begin()->first].push_back(subarc_cell[subs[i]]);
-    }
-  }
-  for (const auto& [cls, pieces] : pieces_of_class) {
-    if (pieces.empty()) return "a region bounded by free EEE arcs alone (a lens between two of them)";
-    Cell c{2, V3(), {}, pieces, -1, true, {}};
-    for (int a : arcs_of_class[cls]) c.facets.push_back(a);
-    bool sampled = false;
-    for (int p : pieces)
-      if (const auto s = sample_off_eee_arcs(ins, arr, f, cells[p].sample)) {
-        c.sample = *s;
-        sampled = true;
-        break;
-      }
-    if (!sampled) return "every boundary sample of a face lies on an EEE cone";
-    cells.push_back(std::move(c));
-  }
-  return {};
-}
 
 // A free EEE arc lying on a great circle (its three edges parallel to one plane: the cone of 10.7 degenerates
 // and the transversals' directions sweep a plane, the rulings of a hyperbolic paraboloid), handled like an EV
@@ -299,10 +168,16 @@ GeneralOrthographicResult general_orthographic_aspect_graph(const Scene& scene, 
 
   // The free EEE arcs cut at the circles (aspect/eee_arc_insertion), when there are any.
   EeeArcInsertion ins;
+  EeeCrossings xs;
   if (out.eee_arcs > 0) {
     ins = insert_eee_arcs(scene, events, arr, normals, eee_on_circle);
     if (!ins.ok) {
       out.problem = std::to_string(out.eee_arcs) + " free EEE event arcs bound its aspects, and " + ins.problem;
+      return out;
+    }
+    xs = find_eee_crossings(scene, events, arr, ins);
+    if (!xs.ok) {
+      out.problem = std::to_string(out.eee_arcs) + " free EEE event arcs bound its aspects, and " + xs.problem;
       return out;
     }
   }
@@ -395,11 +270,34 @@ GeneralOrthographicResult general_orthographic_aspect_graph(const Scene& scene, 
       point_cell[i] = static_cast<int>(cells.size());
       cells.push_back({0, ins.points[i].direction, {}, {}, -1, true, {ins.points[i].arc}});
     }
-  std::vector<int> subarc_cell(ins.subarcs.size());
+  // Crossings of two free EEE arcs (cells of their own, no rational sample), then each sub-arc's segments
+  // between its cut points and crossings (docs/theory.md 10.11, "EEE x EEE crossings").
+  std::vector<int> crossing_cell(xs.crossings.size());
+  for (std::size_t x = 0; x < xs.crossings.size(); ++x) {
+    crossing_cell[x] = static_cast<int>(cells.size());
+    const auto& cx = xs.crossings[x];
+    cells.push_back({0, V3(), {}, {}, -1, false, {ins.subarcs[cx.subarc[0]].arc, ins.subarcs[cx.subarc[1]].arc}});
+  }
+  std::vector<EeeFaceSegment> segments;
+  std::vector<std::vector<int>> segments_of_subarc(ins.subarcs.size());
   for (std::size_t i = 0; i < ins.subarcs.size(); ++i) {
     const EeeSubArc& s = ins.subarcs[i];
-    subarc_cell[i] = static_cast<int>(cells.size());
-    cells.push_back({1, s.sample, {}, {point_cell[s.first], point_cell[s.second]}, -1, true, {s.arc}});
+    const auto& on = xs.of_subarc.empty() ? std::vector<std::array<int, 2>>{} : xs.of_subarc[i];
+    std::vector<int> nodes{point_cell[s.first]};
+    for (const auto& [x, side] : on) nodes.push_back(crossing_cell[x]);
+    nodes.push_back(point_cell[s.second]);
+    for (std::size_t k = 0; k + 1 < nodes.size(); ++k) {
+      Exact t = s.t;
+      if (!on.empty()) {
+        const RootNumber lo = k == 0 ? ins.points[s.first].t : RootNumber(xs.crossings[on[k - 1][0]].t[on[k - 1][1]].hi);
+        const RootNumber hi = k + 1 == on.size() + 1 ? ins.points[s.second].t : RootNumber(xs.crossings[on[k][0]].t[on[k][1]].lo);
+        t = rational_strictly_between(lo, hi);
+      }
+      const V3 sample = on.empty() ? s.sample : scaled_to_unit_max(arc_direction(scene, events.arcs[s.arc], t));
+      segments_of_subarc[i].push_back(static_cast<int>(segments.size()));
+      segments.push_back({static_cast<int>(i), static_cast<int>(cells.size()), nodes[k], nodes[k + 1], t});
+      cells.push_back({1, sample, {}, {nodes[k], nodes[k + 1]}, -1, true, {s.arc}});
+    }
   }
   const int first_face = static_cast<int>(cells.size());
   for (int f = 0; f < F; ++f) {
@@ -410,10 +308,21 @@ GeneralOrthographicResult general_orthographic_aspect_graph(const Scene& scene, 
       cells.push_back(std::move(c));
       continue;
     }
-    if (const std::string p = split_face(scene, events, arr, ins, f, chain_of_arc, point_cell, subarc_cell, cells); !p.empty()) {
-      out.problem = std::to_string(out.eee_arcs) + " free EEE event arcs bound its aspects, and " + p;
+    std::vector<int> ring;  // boundary cells in order: vertex, piece, vertex, ...
+    for (int h : arr.faces[f].halfedges) {
+      const auto& ch = chain_of_arc[h / 2];
+      if (h % 2 == 0) ring.insert(ring.end(), ch.begin(), ch.end() - 1);
+      else ring.insert(ring.end(), ch.rbegin(), ch.rend() - 1);
+    }
+    std::vector<V3> ring_samples;
+    for (int c : ring) ring_samples.push_back(cells[c].sample);
+    const EeeFaceSplit split = split_eee_face(scene, events, arr, normals, ins, xs, f, ring, ring_samples, segments,
+                                              segments_of_subarc, point_cell, crossing_cell);
+    if (!split.problem.empty()) {
+      out.problem = std::to_string(out.eee_arcs) + " free EEE event arcs bound its aspects, and " + split.problem;
       return out;
     }
+    for (const EeeFaceComponent& k : split.components) cells.push_back({2, k.sample, {}, k.facets, -1, true, {}});
   }
   for (int f = first_face; f < static_cast<int>(cells.size()); ++f)
     for (int p : cells[f].facets) {
@@ -486,11 +395,35 @@ GeneralOrthographicResult general_orthographic_aspect_graph(const Scene& scene, 
       const EeeArcPoint& pt = ins.points[crossing_point[c]];
       out.irrational_crossings.push_back({eee_direction_approx(scene, events.arcs[pt.arc], pt.t), aspect[c]});
     }
+  // A crossing of two free EEE arcs: the intersection of the aspects of the two segments of either arc next to
+  // it (docs/theory.md 10.11, "EEE x EEE crossings"; the two arcs must give the same set).
+  std::vector<char> fixed(nc, 0);
+  for (std::size_t x = 0; x < xs.crossings.size(); ++x) {
+    const int c = crossing_cell[x];
+    std::array<std::vector<std::int64_t>, 2> meet;
+    for (int side = 0; side < 2; ++side) {
+      std::vector<int> next;
+      for (int g : segments_of_subarc[xs.crossings[x].subarc[side]])
+        if (segments[g].from == c || segments[g].to == c) next.push_back(segments[g].cell);
+      if (next.size() != 2) throw std::logic_error("general_orthographic_aspect_graph: a crossing without two segments");
+      const auto &a = aspect[next[0]], &b = aspect[next[1]];
+      std::set_intersection(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(meet[side]));
+    }
+    if (meet[0] != meet[1]) {
+      out.problem = std::to_string(out.eee_arcs) +
+                    " free EEE event arcs bound its aspects, and the two free EEE arcs through a crossing give it different "
+                    "aspects, outside the subset the orthographic aspect graph handles (docs/theory.md 10.11)";
+      return out;
+    }
+    aspect[c] = meet[0];
+    fixed[c] = 1;
+    out.eee_crossings.push_back({xs.crossings[x].direction, aspect[c]});
+  }
   std::map<std::vector<std::int64_t>, int> aspect_id;
   std::vector<AspectCell> acells(nc);
   for (int c = 0; c < nc; ++c) {
     const int src = evaluate[c] ? c : (copy_from[c] >= 0 ? copy_from[c] : cells[c].neighbour_face);
-    if (!evaluate[c] && meet_of[c].empty()) aspect[c] = aspect[src];
+    if (!evaluate[c] && meet_of[c].empty() && !fixed[c]) aspect[c] = aspect[src];
     acells[c].dimension = cells[c].dimension;
     acells[c].aspect = aspect_id.insert({aspect[c], static_cast<int>(aspect_id.size())}).first->second;
     acells[c].facets = cells[c].facets;

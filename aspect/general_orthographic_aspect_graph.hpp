@@ -39,6 +39,10 @@ struct GeneralOrthographicResult {
     std::vector<std::int64_t> aspect;
   };
   std::vector<IrrationalCrossing> irrational_crossings;
+  // Each crossing of two free EEE arcs inside a face of the circles (docs/theory.md 10.11, "EEE x EEE
+  // crossings"): a double approximation and its exact aspect (the intersection of the aspects of either arc's two
+  // segments next to it), for tests.
+  std::vector<IrrationalCrossing> eee_crossings;
 };
 
 // Input: a model whose triangles meet only in shared corners and edges. Output: the orthographic aspect graph

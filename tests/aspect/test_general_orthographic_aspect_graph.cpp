@@ -244,6 +244,65 @@ TEST(GeneralOrthographicAspectGraph, TerrainWithIrrationalCrossingsOfFreeArcs) {
   }
 }
 
+// Part (i) of the crossings' proofs, against the oracle: every triangle of the aspect of a crossing X (given by a
+// double approximation) is seen from the rational directions within 2^-24 of it (the approximation and its six
+// axis neighbours, on all sides of the two arcs). Copying a neighbour's aspect or uniting the pieces' breaks it.
+void check_crossings(const Scene& s, const std::vector<GeneralOrthographicResult::IrrationalCrossing>& crossings) {
+  for (const auto& x : crossings) {
+    std::vector<Vec3<Exact>> near;
+    const Vec3<Exact> d(Exact(x.direction[0]), Exact(x.direction[1]), Exact(x.direction[2]));
+    near.push_back(d);
+    for (int k = 0; k < 3; ++k)
+      for (int sg : {1, -1}) {
+        Vec3<Exact> e = d;
+        e[k] += Exact(sg, 1 << 24);
+        near.push_back(e);
+      }
+    std::set<std::int64_t> seen_everywhere;
+    bool first = true;
+    for (const auto& e : near) {
+      const auto ids = oracle_ids(s, e);
+      if (first) seen_everywhere.insert(ids.begin(), ids.end());
+      else
+        for (auto it = seen_everywhere.begin(); it != seen_everywhere.end();)
+          it = std::find(ids.begin(), ids.end(), *it) == ids.end() ? seen_everywhere.erase(it) : std::next(it);
+      first = false;
+    }
+    for (std::int64_t id : x.aspect)
+      EXPECT_TRUE(seen_everywhere.count(id)) << "triangle " << id << " of the crossing's aspect hidden nearby, at "
+                                             << x.direction[0] << " " << x.direction[1] << " " << x.direction[2];
+  }
+}
+
+// Terrains whose free EEE arcs cross inside faces of the circles (refused before session 11: "not certified
+// apart"): the crossings are found exactly and cut the arcs (docs/theory.md 10.11, "EEE x EEE crossings"); every
+// rational cell against the oracle, both sides of every segment, random directions, and each crossing's aspect
+// against part (i). The 2 x 2 terrain of seed 7 (heights random.Random(7).randint(0, 3) / 2, i-major).
+TEST(GeneralOrthographicAspectGraph, TerrainWithCrossingFreeEeeArcs) {
+  const Scene s = terrain_grid({{1.0, 0.5, 1.5}, {0.0, 0.0, 0.0}, {1.0, 0.0, 0.5}});
+  const auto r = general(s);
+  ASSERT_TRUE(r.ok) << r.problem;
+  EXPECT_GT(r.eee_arcs, 0u);
+  ASSERT_FALSE(r.eee_crossings.empty());
+  std::printf("terrain seed 7: %zu regions, %zu EEE x EEE crossings\n", r.graph.regions.size(), r.eee_crossings.size());
+  check_eee_graph(s, r, 22, 100);
+  check_crossings(s, r.eee_crossings);
+}
+
+// The 2 x 2 terrains of seeds 40 and 41 (refused before session 11: two EEE arcs "not certified apart"), against
+// the oracle as above.
+TEST(GeneralOrthographicAspectGraph, TerrainsOfSeeds40And41) {
+  for (const auto& h : std::vector<std::vector<std::vector<double>>>{{{1.5, 0.0, 0.5}, {1.0, 0.5, 0.5}, {1.0, 1.0, 1.5}},
+                                                                    {{1.5, 1.0, 0.5}, {0.5, 1.5, 1.0}, {1.0, 1.5, 0.0}}}) {
+    const Scene s = terrain_grid(h);
+    const auto r = general(s);
+    ASSERT_TRUE(r.ok) << r.problem;
+    std::printf("terrain: %zu regions, %zu EEE x EEE crossings\n", r.graph.regions.size(), r.eee_crossings.size());
+    check_eee_graph(s, r, 28, 100);
+    check_crossings(s, r.eee_crossings);
+  }
+}
+
 // The 2 x 2 terrain of seed 32 (refused before session 10): a free EEE arc touches a great circle of the
 // partition (a double root of n . f, rational), now a cut point like a crossing (docs/theory.md 10.11 "Cuts").
 // (Its two sub-arcs there do not end at one boundary point of one face: the session 9 order of such ends passes
@@ -257,24 +316,21 @@ TEST(GeneralOrthographicAspectGraph, TerrainWithAnEeeArcTouchingACircle) {
   check_eee_graph(s, r, 20, 100);
 }
 
-// The 3 x 3 terrain of docs/performance.md (heights of Python's random.Random(1).randint(0, 3) / 2, i-major):
-// refused in session 9 because a free EEE arc touches a great circle (handled since session 10), now because two
-// of its free EEE arcs are not certified apart (they cross or nearly meet: outside the subset of 10.11), with a
-// one-line error naming the arc's three edges "a-b, c-d and e-f" (vertex indices).
-TEST(GeneralOrthographicAspectGraph, TerrainWithNearlyMeetingEeeArcsIsRefused) {
-  const Scene s = terrain_grid({{0.5, 0, 1, 0}, {1.5, 1.5, 1.5, 1.5}, {0.5, 0, 1.5, 0}, {1.5, 1.5, 0, 1.5}});
-  const auto r = general_orthographic_aspect_graph(s);
-  EXPECT_FALSE(r.ok);
-  EXPECT_GT(r.eee_arcs, 0u);
-  EXPECT_NE(r.problem.find("not certified apart"), std::string::npos) << r.problem;
-  const std::size_t at = r.problem.find("meeting the edges ");
-  ASSERT_NE(at, std::string::npos) << r.problem;
-  int e[6];
-  ASSERT_EQ(std::sscanf(r.problem.c_str() + at, "meeting the edges %d-%d, %d-%d and %d-%d", &e[0], &e[1], &e[2], &e[3],
-                        &e[4], &e[5]),
-            6)
-      << r.problem;
-  EXPECT_EQ(r.problem.find('\n'), std::string::npos);
+// The 3 x 3 terrains of docs/performance.md (heights of Python's random.Random(seed).randint(0, 3) / 2, i-major),
+// refused before session 11 (EEE arcs crossing; seed 2 also two arcs leaving a common point with one tangent,
+// ordered since by the side of one arc's cone the other leaves on): the full oracle check. Disabled in the suite
+// (about 200 CPU s for seed 1); run by hand with --gtest_also_run_disabled_tests (docs/performance.md).
+TEST(GeneralOrthographicAspectGraph, DISABLED_ThreeByThreeTerrainsWithCrossingFreeEeeArcs) {
+  for (const auto& h : std::vector<std::vector<std::vector<double>>>{
+           {{0.5, 0, 1, 0}, {1.5, 1.5, 1.5, 1.5}, {0.5, 0, 1.5, 0}, {1.5, 1.5, 0, 1.5}},
+           {{0, 0, 0, 1}, {0.5, 1, 1, 0.5}, {0, 0.5, 1.5, 1.5}, {1, 1.5, 1, 0}}}) {
+    const Scene s = terrain_grid(h);
+    const auto r = general(s);
+    ASSERT_TRUE(r.ok) << r.problem;
+    EXPECT_GT(r.eee_arcs, 0u);
+    check_eee_graph(s, r, 24, 100);
+    check_crossings(s, r.eee_crossings);
+  }
 }
 
 // Three disjoint tetrahedra, each with one of three pairwise skew edges met by the line x = y = 0 (along x at
@@ -290,17 +346,20 @@ Scene skew_tetrahedra() {
   return make_scene(v, t);
 }
 
-// Its free EEE arcs come too close to be certified apart (lines meeting four edges: two EEE arcs crossing at a
-// direction of degree 4, outside the subset of 10.11): still refused, with the reason.
-TEST(GeneralOrthographicAspectGraph, ClosedSolidWithCrossingFreeEeeArcsIsRefused) {
+// Refused before session 11 (two of its EEE arcs leave a common point with one tangent): now a graph (96 regions),
+// against the oracle like the terrains. Disabled in the suite (about 150 CPU s); run by hand with
+// --gtest_also_run_disabled_tests (docs/performance.md).
+TEST(GeneralOrthographicAspectGraph, DISABLED_ClosedSolidWithCrossingFreeEeeArcs) {
   const Scene s = skew_tetrahedra();
-  const auto r = general_orthographic_aspect_graph(s);
-  EXPECT_FALSE(r.ok);
-  EXPECT_GT(r.eee_arcs, 0u);
-  EXPECT_NE(r.problem.find("another free EEE arc"), std::string::npos) << r.problem;
   const ClosedSolidFronts f = closed_solid_fronts(s);
   EXPECT_FALSE(f.ok) << "in the class of 10.5";
   EXPECT_TRUE(f.outside_class) << f.problem;
+  const auto r = general(s);
+  ASSERT_TRUE(r.ok) << r.problem;
+  EXPECT_GT(r.eee_arcs, 0u);
+  std::printf("three tetrahedra: %zu regions, %zu EEE x EEE crossings\n", r.graph.regions.size(), r.eee_crossings.size());
+  check_eee_graph(s, r, 26, 150);
+  check_crossings(s, r.eee_crossings);
 }
 
 // The U-shaped slot: the section (0,0) (3,0) (3,2) (2,2) (2,1) (1,1) (1,2) (0,2) in the xz-plane extruded along
