@@ -35,8 +35,8 @@ CellPvs conservative_cell_pvs(const PvsContext& context, const RationalBox3& cel
     if (options.on_progress) options.on_progress(d);
   };
   auto decide_triangle = [&](std::size_t i, std::ptrdiff_t& hint) {
-    if (back_faces.hides_triangle(static_cast<std::int64_t>(i)) || proofs.hides_triangle(static_cast<std::int64_t>(i), hint))
-      culled[i] = 1;
+    const auto t = static_cast<std::int64_t>(i);
+    if (back_faces.hides_triangle(t) || proofs.hides_triangle(t, hint)) culled[i] = 1;
     report(1);
   };
   const TriangleBvh& bvh = context.bvh();
