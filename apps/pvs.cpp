@@ -343,7 +343,8 @@ const exactvis::app::CommandRegistration registration("pvs", 110, [](CLI::App& p
                   "PVS method: exact (every triangle decided exactly), sampled (random rays per cell, each hit "
                   "confirmed exactly: never lists a hidden triangle, may miss visible ones) or conservative (leaves "
                   "out only triangles, or hierarchy boxes of them, proved exactly to be hidden by one wall rectangle "
-                  "(a merged run of wall pieces), two walls at a corner, a chain of walls or one closed convex solid: "
+                  "(a merged run of wall pieces), two walls at a corner, a chain of walls or one closed convex solid, "
+                  "or as back faces of their own closed convex solid: "
                   "never misses a visible one, lists extra; no witnesses; --rays and --samples unused)")
       ->capture_default_str();
   sub->add_option("--shard", o->shard, "Compute only cells K, K+N, K+2N, ... (job arrays; join with pvs-merge)");

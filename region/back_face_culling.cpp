@@ -82,7 +82,8 @@ void BackFaceCulling::drop_back_faces(std::vector<ShaftOccluder>& occluders,
   std::size_t w = 0;
   for (std::size_t i = 0; i < occluders.size(); ++i) {
     const std::int64_t t = occluders[i].triangle;
-    const bool drop = !occluders[i].panel_loop && hides_triangle(t) && available(solid_of_[static_cast<std::size_t>(t)]);
+    const bool drop =
+        !occluders[i].panel_loop && hides_triangle(t) && available(solid_of_[static_cast<std::size_t>(t)]);
     if (drop) continue;
     if (w != i) occluders[w] = std::move(occluders[i]);
     ++w;

@@ -1,5 +1,6 @@
 #include "region/conservative_pvs.hpp"
 
+#include "region/back_face_culling.hpp"
 #include "region/cell_visibility.hpp"
 #include "region/single_occluder_culling.hpp"
 #include "util/for_each_index.hpp"
@@ -22,6 +23,9 @@ CellPvs conservative_cell_pvs(const PvsContext& context, const RationalBox3& cel
   const std::size_t n = scene.triangles.size();
   // The wall and solid proofs (region/single_occluder_culling.hpp), prepared once for this cell.
   const SingleOccluderCulling proofs(context, cell, search);
+  // Back faces of closed convex solids apart from the cell (region/back_face_culling.hpp): hidden by their own
+  // solid, an exact proof the wall and solid proofs never make (they skip the target's own solid).
+  const BackFaceCulling back_faces(context, cell);
   std::atomic<std::int64_t> nodes_tested{0}, nodes_hidden{0};
 
   std::vector<char> culled(n, 0);
@@ -31,7 +35,8 @@ CellPvs conservative_cell_pvs(const PvsContext& context, const RationalBox3& cel
     if (options.on_progress) options.on_progress(d);
   };
   auto decide_triangle = [&](std::size_t i, std::ptrdiff_t& hint) {
-    if (proofs.hides_triangle(static_cast<std::int64_t>(i), hint)) culled[i] = 1;
+    const auto t = static_cast<std::int64_t>(i);
+    if (back_faces.hides_triangle(t) || proofs.hides_triangle(t, hint)) culled[i] = 1;
     report(1);
   };
   const TriangleBvh& bvh = context.bvh();
@@ -58,7 +63,7 @@ CellPvs conservative_cell_pvs(const PvsContext& context, const RationalBox3& cel
     }
   };
   tbb::task_arena arena(options.threads > 0 ? options.threads : tbb::task_arena::automatic);
-  if (proofs.any()) {
+  if (proofs.any() || back_faces.any()) {
     if (options.hierarchy && !bvh.nodes.empty()) arena.execute([&] { visit(0, -1); });
     else
       arena.execute([&] {

@@ -20,6 +20,8 @@
 //   (region/convex_occluder.hpp: tree crowns, closed boxes), used only when both the cell and the target
 //   box are strictly apart from the solid's box, so the blocking point is inside the segment. The solids are
 //   tried in 2.5D scenes too (after the walls); cells carry no view frustum, so there is no frustum culling.
+// - Before those, back faces of closed convex solids (region/back_face_culling.hpp): a triangle of a solid apart
+//   from the cell with the whole cell on the solid's side of its plane is hidden by its own solid.
 // Floats only choose which wall to try (a double version of the test); each proof is exact.
 #include "region/cell_pvs.hpp"
 #include "region/single_occluder_culling.hpp"

@@ -39,9 +39,11 @@ Compared check_superset(const Scene& scene, const RationalBox3& cell, int refute
   one_thread.threads = 1;
   const CellPvs cons1 = conservative_cell_pvs(context, cell, one_thread);
   EXPECT_EQ(cons.visible.size(), cons1.visible.size()) << "thread count changed the answer";
-  // The exact reference without the wall and solid proofs it shares with `conservative` (independent).
+  // The exact reference without the wall, solid and back-face proofs it shares with `conservative` (independent).
   PvsOptions no_proofs;
   no_proofs.occluder_proofs = false;
+  no_proofs.back_faces = false;
+  no_proofs.back_face_occluders = false;
   const CellPvs exact = exact_cell_pvs(context, cell, no_proofs);
   std::vector<char> listed(scene.triangles.size(), 0);
   for (std::size_t k = 0; k < cons.visible.size(); ++k) {
