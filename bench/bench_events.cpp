@@ -9,6 +9,7 @@
 #include "events/ev_events.hpp"
 #include "events/light_source.hpp"
 #include "events/scene_adjacency.hpp"
+#include "kernel/predicate_counters.hpp"
 #include "kernel/scene_generators.hpp"
 
 #include <chrono>
@@ -55,6 +56,7 @@ struct EeeRow {
 };
 
 EeeRow run_eee(const Scene& scene, const EeeOptions& opt) {
+  reset_predicate_counters();
   const auto t0 = std::chrono::steady_clock::now();
   const EeeResult r = enumerate_eee_events(scene, opt);
   EeeRow row;
@@ -78,6 +80,12 @@ void eee_print(const std::string& kind, const Scene& s, const EeeRow& r, double 
               r.intervals, r.seconds);
   if (std::isnan(growth)) std::printf("%7s\n", "-");
   else std::printf("%7.2f\n", growth);
+  // The occluder layers of eee_event (docs/theory.md section 9, "Scale"): interval-decided / exact.
+  std::printf("        occluder layers (interval / exact):");
+  for (const auto& c : predicate_counters())
+    if (c.name.rfind("eee_", 0) == 0)
+      std::printf(" %s %llu / %llu", c.name.c_str(), (unsigned long long)c.interval, (unsigned long long)c.exact);
+  std::printf("\n");
   std::fflush(stdout);
 }
 

@@ -2,7 +2,9 @@
 
 #include "events/eee_line_miss_filter.hpp"
 #include "events/eee_occluder_filter.hpp"
+#include "events/eee_occluder_pattern.hpp"
 #include "events/interval_end_key.hpp"
+#include "kernel/predicate_counters.hpp"
 #include "kernel/ray_first_hit.hpp"
 #include "kernel/predicates.hpp"
 #include "kernel/quadratic_polynomial.hpp"
@@ -168,6 +170,99 @@ struct Occluder {
   std::array<int, 3> ids;
   std::array<Vec3<Exact>, 3> c;
 };
+
+// The invalid pieces of occluder T over (vmin, vmax) from its certified pattern (events/eee_occluder_pattern):
+// the pieces the exact analysis of eee_event would append, in its order (each blocked gap, then the next
+// breakpoint when it is blocked and rational), with exact ends. Exact roots are computed only for the
+// polynomials of breakpoints that end a piece and for those the pattern asks to check; a polynomial's roots
+// inside (vmin, vmax), sorted, correspond one to one to the pattern's enclosures of it. Returns false (and
+// appends nothing) when a check refutes the pattern: the caller runs the exact analysis. Throws
+// std::logic_error if an unchecked polynomial disagrees with its enclosures (a defect, never rounding).
+bool add_pattern_pieces(const Family& f, const Occluder& T, const Scene& scene, const EeeOccluderPattern& pattern,
+                        const Breakpoint& vmin, const Breakpoint& vmax, std::vector<Invalid>& invalid) {
+  static PredicateCounter counter("eee_occluder_pattern_check");
+  constexpr int kSlots = 8;  // q0, q1, q2, h0, h1, h2, den1, den2
+  auto slot_of = [](const EeeOccluderBreakpoint& b) {
+    return b.poly == EeeOccluderPoly::Side ? b.index : b.poly == EeeOccluderPoly::Height ? 3 + b.index : 5 + b.index;
+  };
+  int expected[kSlots] = {};
+  for (const auto& b : pattern.inner) ++expected[slot_of(b)];
+  std::array<std::optional<std::vector<Breakpoint>>, kSlots> roots;
+  std::array<Vec3<Exact>, 3> c;
+  bool have_corners = false;
+  auto corners = [&]() -> const std::array<Vec3<Exact>, 3>& {
+    if (!have_corners) {
+      const auto& tr = scene.triangles[T.index];
+      for (int k = 0; k < 3; ++k) c[k] = to_rational(scene.corner(tr, k));
+      have_corners = true;
+    }
+    return c;
+  };
+  // The exact roots of a polynomial strictly inside (vmin, vmax), sorted, with the exact analysis' causes.
+  auto exact_roots = [&](const EeeOccluderBreakpoint& b) -> const std::vector<Breakpoint>& {
+    const int slot = slot_of(b);
+    if (!roots[slot]) {
+      Poly p;
+      CriticalEnd cause;
+      cause.cause = CriticalEnd::Cause::Occluder;
+      cause.triangle = T.id;
+      if (b.poly == EeeOccluderPoly::Side) {
+        const auto& cc = corners();
+        const PluckerLine<Exact> el = line_through(cc[b.index], cc[(b.index + 1) % 3]);
+        p = dotc(f.Ld, el.m) + dotc(f.Lm, el.d);
+        cause.feature.kind = OccluderFeature::Kind::Edge;
+        cause.feature.ids = {T.ids[b.index], T.ids[(b.index + 1) % 3]};
+      } else if (b.poly == EeeOccluderPoly::Height) {
+        const auto& cc = corners();
+        const Vec3<Exact> n = cross(cc[1] - cc[0], cc[2] - cc[0]);
+        p = f.height(b.index, n, dot(n, cc[0]));
+        cause.feature.kind = OccluderFeature::Kind::Face;
+        cause.feature.ids = {T.ids[0], T.ids[1], T.ids[2]};
+      } else {
+        p = f.den[b.index];
+        cause = singular_end(b.index);
+      }
+      std::vector<Breakpoint> r;
+      for (const Root& x : real_roots(p))
+        if (x.t > vmin.t && x.t < vmax.t) r.push_back({x.t, x.rational, x.q, cause});
+      std::sort(r.begin(), r.end(), [](const Breakpoint& x, const Breakpoint& y) { return x.t < y.t; });
+      roots[slot] = std::move(r);
+    }
+    return *roots[slot];
+  };
+  if (!pattern.verify.empty()) {
+    std::atomic<std::uint64_t>* counts = counter.thread_counts();
+    detail::bump(counts[0]);
+    for (const auto& b : pattern.verify)
+      if (static_cast<int>(exact_roots(b).size()) != expected[slot_of(b)]) {
+        detail::bump(counts[1 + static_cast<int>(FilterLayer::Exact)]);
+        return false;
+      }
+    detail::bump(counts[1 + static_cast<int>(FilterLayer::Interval)]);
+  }
+  auto exact_breakpoint = [&](const EeeOccluderBreakpoint& b) -> const Breakpoint& {
+    const std::vector<Breakpoint>& r = exact_roots(b);
+    if (static_cast<int>(r.size()) != expected[slot_of(b)])
+      throw std::logic_error("eee_event: occluder pattern and exact roots disagree");
+    return r[b.rank];
+  };
+  const std::size_t nb = pattern.inner.size();
+  auto at = [&](std::size_t i) -> const Breakpoint& {
+    return i == 0 ? vmin : i == nb + 1 ? vmax : exact_breakpoint(pattern.inner[i - 1]);
+  };
+  for (std::size_t g = 0; g <= nb; ++g) {
+    if (pattern.gap_blocked[g]) {
+      const Breakpoint& lo = at(g);
+      const Breakpoint& hi = at(g + 1);
+      invalid.push_back({lo.t, hi.t, lo.cause, hi.cause});
+    }
+    if (g < nb && pattern.inner[g].blocked) {
+      const Breakpoint& b = at(g + 1);
+      if (b.rational) invalid.push_back({b.t, b.t, b.cause, b.cause});
+    }
+  }
+  return true;
+}
 
 }  // namespace
 
@@ -336,6 +431,20 @@ std::optional<EeeEvent> eee_event(const Scene& scene, const SceneAdjacency& adj,
       for (int j = 0; j < 3; ++j) d[k][j] = f.Ld[k].c[j], m[k][j] = f.Lm[k].c[j];
     return EeeLineMissFilter(d, m);
   }();
+  // The interval layer of the exact analysis below (events/eee_occluder_pattern.hpp): the same invalid pieces
+  // from certified root enclosures and signs, exact roots only where a piece ends.
+  const EeeOccluderPatternFilter pattern_filter = [&] {
+    auto vec = [](const PVec& v) {
+      EeeOccluderPatternFilter::VecPoly r;
+      for (int k = 0; k < 3; ++k)
+        for (int j = 0; j < 3; ++j) r[k][j] = v[k].c[j];
+      return r;
+    };
+    auto scalar = [](const Poly& p) { return EeeOccluderPatternFilter::ScalarPoly{p.c[0], p.c[1], p.c[2]}; };
+    return EeeOccluderPatternFilter(vec(f.P), vec(f.num[1]), scalar(f.den[1]), vec(f.num[2]), scalar(f.den[2]),
+                                    vec(f.Ld), vec(f.Lm));
+  }();
+  std::pair<double, double> vmin_enclosure = CGAL::to_interval(vmin.t), vmax_enclosure = CGAL::to_interval(vmax.t);
   // Large candidates first (a floating-point heuristic for the order only): every few occluders the free set
   // is recomputed; the search stops when it is empty and later occluders only look inside its hull.
   std::vector<std::pair<double, int>> cand;
@@ -356,17 +465,29 @@ std::optional<EeeEvent> eee_event(const Scene& scene, const SceneAdjacency& adj,
       if (comps.empty()) return std::nullopt;
       vmin = breakpoint_at(comps.front().t0, comps.front().end0);
       vmax = breakpoint_at(comps.back().t1, comps.back().end1);
+      vmin_enclosure = CGAL::to_interval(vmin.t);
+      vmax_enclosure = CGAL::to_interval(vmax.t);
     }
     const auto& tr = scene.triangles[ti];
     if (hull_filter.separated(scene.corner(tr, 0), scene.corner(tr, 1), scene.corner(tr, 2))) continue;
     if (line_filter.misses(scene.corner(tr, 0), scene.corner(tr, 1), scene.corner(tr, 2),
-                           CGAL::to_interval(vmin.t).first, CGAL::to_interval(vmax.t).second))
+                           vmin_enclosure.first, vmax_enclosure.second))
       continue;
+    if (stats) ++stats->occluder_tests;
     Occluder T{ti, tr.id, tr.v, {}};
+    const std::optional<EeeOccluderPattern> pattern = pattern_filter.pattern(
+        scene.corner(tr, 0), scene.corner(tr, 1), scene.corner(tr, 2), vmin_enclosure, vmax_enclosure);
+    if (pattern && pattern->blocks_nothing() && pattern->verify.empty()) continue;
+    if (pattern) {
+      const std::size_t before = invalid.size();
+      if (add_pattern_pieces(f, T, scene, *pattern, vmin, vmax, invalid)) {
+        if (invalid.size() > before) ++since_check;
+        continue;
+      }
+    }
     for (int k = 0; k < 3; ++k) T.c[k] = to_rational(scene.corner(tr, k));
     const Vec3<Exact> n = cross(T.c[1] - T.c[0], T.c[2] - T.c[0]);
     const Exact c = dot(n, T.c[0]);
-    if (stats) ++stats->occluder_tests;
     std::vector<Breakpoint> b;
     b.push_back(vmin);
     b.push_back(vmax);

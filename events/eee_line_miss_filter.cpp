@@ -3,12 +3,13 @@
 #include "kernel/filtered_predicate.hpp"
 #include "kernel/predicate_counters.hpp"
 
+#include <CGAL/FPU.h>
 #include <CGAL/Interval_nt.h>
 
 namespace exactvis {
 namespace {
 
-using I = CGAL::Interval_nt<>;
+using I = Interval;  // CGAL::Interval_nt<false>: only under the Protect_FPU_rounding of misses()
 using IVec = std::array<I, 3>;
 
 constexpr int kPieces = 8;  // pieces of the range: a quadratic's interval enclosure tightens with the width
@@ -36,6 +37,15 @@ bool EeeLineMissFilter::misses(const Point3& a, const Point3& b, const Point3& c
     return false;
   };
   if (!filter_enabled() || !(t_lo <= t_hi)) return not_proved();
+  if (!proved(a, b, c, t_lo, t_hi)) return not_proved();
+  detail::bump(counts[1 + static_cast<int>(FilterLayer::Interval)]);
+  return true;
+}
+
+bool EeeLineMissFilter::proved(const Point3& a, const Point3& b, const Point3& c, double t_lo, double t_hi) const {
+  // One rounding-mode switch for the whole test (the per-operation protection of Interval_nt<true> cost
+  // more than the arithmetic).
+  CGAL::Protect_FPU_rounding<true> guard;
   // q_k(t) = side(L(t), e_k) = d(t) . m_k + m(t) . d_k with e_k = (c_k+1 - c_k, c_k x c_k+1): coefficients.
   const IVec v[3] = {enclose(a), enclose(b), enclose(c)};
   std::array<std::array<I, 3>, 3> q;  // [edge][degree]
@@ -62,10 +72,9 @@ bool EeeLineMissFilter::misses(const Point3& a, const Point3& b, const Point3& c
       pos = pos || val.inf() > 0;
       neg = neg || val.sup() < 0;
     }
-    if (!(pos && neg)) return not_proved();
+    if (!(pos && neg)) return false;
     prev = next;
   }
-  detail::bump(counts[1 + static_cast<int>(FilterLayer::Interval)]);
   return true;
 }
 

@@ -34,6 +34,8 @@ class EeeLineMissFilter {
   bool misses(const Point3& a, const Point3& b, const Point3& c, double t_lo, double t_hi) const;
 
  private:
+  // The interval certificate itself (rounding mode switched once inside).
+  bool proved(const Point3& a, const Point3& b, const Point3& c, double t_lo, double t_hi) const;
   std::array<std::array<std::array<double, 2>, 3>, 3> d_{}, m_{};  // [axis][degree] = [lo, hi]
 };
 

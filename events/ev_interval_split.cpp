@@ -6,6 +6,7 @@
 #include "kernel/predicates.hpp"
 #include "util/sub_intervals.hpp"
 
+#include <CGAL/FPU.h>
 #include <CGAL/Interval_nt.h>
 #include <CGAL/Mpzf.h>
 
@@ -18,6 +19,10 @@ namespace exactvis {
 namespace {
 
 using I = CGAL::Interval_nt<>;
+// The hot interval tests below run unprotected intervals under one rounding-mode switch each (the
+// per-operation protection of Interval_nt<true> cost more than their arithmetic); same enclosures.
+using IU = Interval;  // CGAL::Interval_nt<false>: only under CGAL::Protect_FPU_rounding<true>
+IU unprotected(const I& x) { return IU(x.inf(), x.sup()); }
 
 // A point of the wedge plane in the coordinates X = V + (alpha (A - V) + beta (B - V)) / |n|^2, n = (A - V) x
 // (B - V): the affine coordinates scaled by |n|^2, so that they are dot products of input differences (no
@@ -149,15 +154,18 @@ std::vector<CriticalInterval> split_ev_interval(const Scene& scene, const SceneA
   const IP ica = iv3(mca), icb = iv3(mcb);
   const double nn_lo = CGAL::to_interval(nn).first;  // sigma < nn_lo certainly means affine sigma < 1
   const auto it0 = CGAL::to_interval(interval.t0), it1 = CGAL::to_interval(interval.t1);
+  const std::array<IU, 3> uca{unprotected(ica[0]), unprotected(ica[1]), unprotected(ica[2])},
+      ucb{unprotected(icb[0]), unprotected(icb[1]), unprotected(icb[2])};
   auto may_matter = [&](const SceneTriangle& tri) {
-    I sig[3], tt[3];
+    CGAL::Protect_FPU_rounding<true> guard;
+    IU sig[3], tt[3];
     for (int k = 0; k < 3; ++k) {
       const Point3& q = scene.corner(tri, k);
-      const IP r{I(q.x) - I(pv.x), I(q.y) - I(pv.y), I(q.z) - I(pv.z)};
-      const I al = r[0] * ica[0] + r[1] * ica[1] + r[2] * ica[2];
-      const I be = r[0] * icb[0] + r[1] * icb[1] + r[2] * icb[2];
+      const IU r[3] = {IU(q.x) - IU(pv.x), IU(q.y) - IU(pv.y), IU(q.z) - IU(pv.z)};
+      const IU al = r[0] * uca[0] + r[1] * uca[1] + r[2] * uca[2];
+      const IU be = r[0] * ucb[0] + r[1] * ucb[1] + r[2] * ucb[2];
       sig[k] = al + be;
-      tt[k] = I(0);
+      tt[k] = IU(0);
       if (sig[k].inf() > 0 || sig[k].sup() < 0) tt[k] = be / sig[k];
     }
     const bool pos = sig[0].inf() > 0 && sig[1].inf() > 0 && sig[2].inf() > 0;
@@ -283,13 +291,14 @@ std::vector<CriticalInterval> split_ev_interval(const Scene& scene, const SceneA
   // Interval filter of the exact crossing test: true only when the segments' parameters u, v (below) are
   // certainly outside [0, 1] (the exact test then skips the pair too); the denominator must exclude 0.
   auto certainly_apart = [&](std::size_t fi, std::size_t gi) {
-    const auto& f = seg_box[fi];
-    const auto& g = seg_box[gi];
-    const I d1a = f[2] - f[0], d1b = f[3] - f[1], d2a = g[2] - g[0], d2b = g[3] - g[1];
-    const I den = d1a * d2b - d1b * d2a;
+    CGAL::Protect_FPU_rounding<true> guard;
+    IU f[4], g[4];
+    for (int k = 0; k < 4; ++k) f[k] = unprotected(seg_box[fi][k]), g[k] = unprotected(seg_box[gi][k]);
+    const IU d1a = f[2] - f[0], d1b = f[3] - f[1], d2a = g[2] - g[0], d2b = g[3] - g[1];
+    const IU den = d1a * d2b - d1b * d2a;
     if (!(den.inf() > 0 || den.sup() < 0)) return false;
-    const I wa = g[0] - f[0], wb = g[1] - f[1];
-    const I u = (wa * d2b - wb * d2a) / den, v = (wa * d1b - wb * d1a) / den;
+    const IU wa = g[0] - f[0], wb = g[1] - f[1];
+    const IU u = (wa * d2b - wb * d2a) / den, v = (wa * d1b - wb * d1a) / den;
     return u.sup() < 0 || u.inf() > 1 || v.sup() < 0 || v.inf() > 1;
   };
   // (b) crossings of a triangle's segments with the other segments, inside (t0, t1); cached per triangle.

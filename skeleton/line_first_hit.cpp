@@ -4,6 +4,7 @@
 #include "kernel/rational_between.hpp"
 #include "kernel/segment_triangle_intersection.hpp"
 
+#include <CGAL/FPU.h>
 #include <CGAL/Interval_nt.h>
 
 #include <algorithm>
@@ -14,7 +15,9 @@ namespace exactvis {
 namespace {
 
 using R = RootNumber;
-using I = CGAL::Interval_nt<>;
+// Unprotected intervals: every arithmetic on them runs under a CGAL::Protect_FPU_rounding<true> of the
+// function doing it (one rounding-mode switch per test instead of one per operation; same enclosures).
+using I = Interval;
 using IVec = std::array<I, 3>;
 
 IVec enclose(const Vec3<R>& v) {
@@ -42,6 +45,7 @@ bool certainly_negative(const I& x) { return x.sup() < 0; }
 // certain opposite sign excludes it. Everything else (parallel, coplanar, ambiguous) returns false.
 bool certainly_misses(const IVec& o, const IVec& d, const IVec* to, const Point3& a, const Point3& b,
                       const Point3& c) {
+  CGAL::Protect_FPU_rounding<true> guard;
   const IVec ia = enclose(a), ib = enclose(b), ic = enclose(c);
   const IVec n = cross(sub(ib, ia), sub(ic, ia));
   const I h1 = dot(n, d);
@@ -65,6 +69,7 @@ bool certainly_misses(const IVec& o, const IVec& d, const IVec* to, const Point3
 // (enclosures o, d): the crossing parameter's interval when the ray certainly crosses the plane, else 0 (its
 // results are >= 0).
 double parameter_lower_bound(const IVec& o, const IVec& d, const Point3& a, const Point3& b, const Point3& c) {
+  CGAL::Protect_FPU_rounding<true> guard;
   const IVec ia = enclose(a);
   const IVec n = cross(sub(enclose(b), ia), sub(enclose(c), ia));
   const I h1 = dot(n, d);
@@ -143,7 +148,12 @@ bool OpenSegmentTest::meets(const Point3& a, const Point3& b, const Point3& c) c
                I(lo_hi_from_[2][0], lo_hi_from_[2][1])};
   const IVec q{I(lo_hi_to_[0][0], lo_hi_to_[0][1]), I(lo_hi_to_[1][0], lo_hi_to_[1][1]),
                I(lo_hi_to_[2][0], lo_hi_to_[2][1])};
-  if (certainly_misses(o, sub(q, o), &q, a, b, c)) return false;
+  IVec d;
+  {
+    CGAL::Protect_FPU_rounding<true> guard;
+    d = sub(q, o);
+  }
+  if (certainly_misses(o, d, &q, a, b, c)) return false;
   if (rational_)  // the kernel's filtered exact test
     return open_segment_meets_closed_triangle(from_q_, to_q_, RationalPoint3{Exact(a.x), Exact(a.y), Exact(a.z)},
                                               RationalPoint3{Exact(b.x), Exact(b.y), Exact(b.z)},
