@@ -257,10 +257,12 @@ EeeFaceSplit split_eee_face(const Scene& scene, const DirectionEventArcs& events
   for (std::size_t k = 0; k < inner.size(); ++k) {
     out.components[k].facets.assign(facets[k].begin(), facets[k].end());
     std::optional<V3> sample;
-    for (int d = 0; d < darts && !sample; ++d) {
-      if (orbit[d] != inner[k] || edges[d / 2].segment >= 0 || d % 2 != 0) continue;
-      for (int i = 1; i < n; i += 2)
-        if (2 * ring_edge[i] == d) sample = sample_off_eee_arcs(ins, arr, f, ring_samples[i]);
+    // Boundary pieces first, in ring order from the first end on the boundary (session 10's choice, so models
+    // without crossings keep their samples).
+    const int start = list.empty() ? 0 : list.front().pos;
+    for (int j = 0; j < n && !sample; ++j) {
+      const int i = (start + j) % n;
+      if (i % 2 == 1 && orbit[2 * ring_edge[i]] == inner[k]) sample = sample_off_eee_arcs(ins, arr, f, ring_samples[i]);
     }
     for (int d = 0; d < darts && !sample; ++d) {
       if (orbit[d] != inner[k] || edges[d / 2].segment < 0) continue;

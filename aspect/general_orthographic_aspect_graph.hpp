@@ -13,7 +13,10 @@
 // face's aspect); aspect/aspect_regions merges cells into regions. Free EEE arcs (conics, theory §10.11) are
 // cut at the circles (aspect/eee_arc_insertion) and split the faces they cross; EEE arcs lying on a great circle
 // (three edges parallel to one plane) are handled like EV arcs; an EEE arc crossing a free arc of a circle at an
-// irrational direction gives that point the intersection of the aspects of the circle's pieces next to it.
+// irrational direction gives that point the intersection of the aspects of the circle's pieces next to it; two
+// free EEE arcs crossing inside a face (aspect/eee_crossings) cut each other into segments, the face's components
+// are traced as a plane graph (aspect/eee_face_split), and the crossing gets the intersection of the aspects of
+// either arc's two segments next to it.
 // Models whose EEE arcs fall outside the subset of §10.11 are refused with one line.
 #include "aspect/aspect_graph_3d.hpp"
 #include "kernel/scene.hpp"
