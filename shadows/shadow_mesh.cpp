@@ -152,8 +152,10 @@ ShadowResult compute_shadows(const Scene& scene, const ShadowOptions& options) {
       {
         const std::string why = "receiver triangle " + std::to_string(out.triangle) + " (id " + std::to_string(rid) +
                                 "): exact arrangement failed (" + arr.failure + ")";
+        std::string one_line = why;  // CGAL's messages span lines
+        std::replace(one_line.begin(), one_line.end(), '\n', ' ');
         std::lock_guard<std::mutex> lock(warn_mutex);
-        std::cerr << "exactvis shadows: warning: " << why
+        std::cerr << "exactvis shadows: warning: " << one_line
                   << "; its faces are the triangulation's (EEE arcs as chords)\n";
         dump_arrangement_curves(arcs, why);
       }

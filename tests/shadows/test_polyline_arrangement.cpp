@@ -379,6 +379,37 @@ std::vector<ArrangementCurve> read_dump(const std::string& path) {
   return out;
 }
 
+// Many arcs (the town 10^4 receiver 9977 had 668 arcs, 10688 initial pieces, 7553 curves): 300 disjoint
+// quarter circles of 16 exact rational points each (4500 initial pieces). The piece budget was a fixed 4000
+// and refused them before any test (failed, then the triangulation's faces); it now scales with the
+// initial pieces. Oracle: 300 disjoint arcs and a dangling segment make one face with the triangle, of
+// area 1/2 (nothing closes).
+TEST(PolylineArrangement, ManyArcsAreWithinThePieceBudget) {
+  std::vector<ArrangementCurve> curves;
+  const Exact r(1, 200);
+  for (int i = 1; i < 40 && curves.size() < 300; ++i)
+    for (int j = 1; i + j < 38 && curves.size() < 300; ++j) {
+      const Exact cx(i, 40), cy(j, 40);
+      ArrangementCurve c;
+      c.conic = std::array<Exact, 6>{Exact(1), Exact(0), Exact(1), -2 * cx, -2 * cy, cx * cx + cy * cy - r * r};
+      for (int k = 0; k <= 15; ++k) {
+        const Exact t(k, 15), d = 1 + t * t;
+        c.points.push_back({cx + r * (1 - t * t) / d, cy + r * 2 * t / d});
+      }
+      curves.push_back(std::move(c));
+    }
+  ASSERT_EQ(curves.size(), 300u);
+  // A segment from inside the first piece's sliver (radius 0.9992 r, beyond its chord at 0.9978 r) across
+  // the arc: the first round must split (as on the town receiver), so the budget is checked.
+  const Exact cx(1, 40), cy(1, 40);
+  curves.push_back({{{cx + r * Exact(997, 1000), cy + r * Exact(997, 15000)}, {cx + r * Exact(101, 100), cy + r * Exact(101, 1500)}}, std::nullopt});
+  const ReceiverArrangement a = polyline_arrangement(curves);
+  ASSERT_FALSE(a.failed) << a.failure;
+  EXPECT_EQ(a.conic_arcs, 300u);
+  ASSERT_EQ(a.faces.size(), 1u);
+  EXPECT_NEAR(a.faces[0].area_uv, 0.5, 1e-9);
+}
+
 // Receivers of the generated rooms (seed 1, bench_shadows' light; dumped with EXACTVIS_DUMP_ARRANGEMENTS)
 // on which CGAL 5.5's conic traits fail in the receiver frame: the arrangement is the certified polyline
 // one, and its faces are those of CGAL's conic arrangement in another frame (the oracle).
